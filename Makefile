@@ -1,0 +1,134 @@
+# SPDX-License-Identifier: Apache-2.0
+# Metronome: one Makefile, named gates. `make help` lists them.
+
+SHELL := /bin/bash
+.DEFAULT_GOAL := all
+
+BUILD     ?= build
+NPROC     := $(shell nproc 2>/dev/null || echo 2)
+KERNEL_INC := -Ikernel/include -Ikernel/port -Ikernel/spec
+KERNEL_SRC := $(wildcard kernel/src/*.c)
+POSIX_SRC  := $(wildcard hal_posix/*.c)
+WARN_C     := -std=c11 -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wshadow \
+              -Wstrict-prototypes -Wmissing-prototypes -Wcast-align -Wundef -Wformat=2 -Werror
+WARN_POSIX := -std=c11 -Wall -Wextra -Wshadow -Wundef -Werror
+WARN_CXX   := -std=c++17 -Wall -Wextra -Wshadow -Werror
+
+.PHONY: help all kernel test test-fast test-asan test-ubsan test-tsan test-clang cross lint \
+        format-check demo deps-test deps-cross deps-lint clean
+
+help:
+	@echo "make            build the kernel and host port with gcc and clang (warnings are errors)"
+	@echo "make test       install test deps, run the googletest suite: gcc, clang, ASan, UBSan, TSan"
+	@echo "make cross      build the kernel for Cortex-M4 and print sizes per module"
+	@echo "make lint       cppcheck (MISRA C:2012 addon) and clang-tidy over kernel/"
+	@echo "make demo       run a task table on the host port and print its statistics"
+	@echo "make clean"
+
+# ---------------------------------------------------------------- host builds
+# $(call host_lib,NAME,CC,EXTRA_CFLAGS)
+define host_lib
+$(BUILD)/$(1)/obj/kernel/%.o: kernel/src/%.c $$(wildcard kernel/include/mt/*.h kernel/port/*.h kernel/spec/*.h kernel/src/*.h)
+	@mkdir -p $$(@D)
+	$(2) $(WARN_C) $(3) $(KERNEL_INC) -Ikernel/src -c $$< -o $$@
+$(BUILD)/$(1)/obj/posix/%.o: hal_posix/%.c $$(wildcard hal_posix/*.h kernel/include/mt/*.h kernel/port/*.h)
+	@mkdir -p $$(@D)
+	$(2) $(WARN_POSIX) $(3) $(KERNEL_INC) -Ihal_posix -c $$< -o $$@
+$(BUILD)/$(1)/libmt.a: $(patsubst kernel/src/%.c,$(BUILD)/$(1)/obj/kernel/%.o,$(KERNEL_SRC))
+	@mkdir -p $$(@D)
+	ar rcs $$@ $$^
+$(BUILD)/$(1)/libmt_posix.a: $(patsubst hal_posix/%.c,$(BUILD)/$(1)/obj/posix/%.o,$(POSIX_SRC))
+	@mkdir -p $$(@D)
+	ar rcs $$@ $$^
+endef
+
+SAN_ASAN  := -O1 -g -fsanitize=address -fno-omit-frame-pointer
+SAN_UBSAN := -O1 -g -fsanitize=undefined -fno-sanitize-recover=all
+SAN_TSAN  := -O1 -g -fsanitize=thread
+
+$(eval $(call host_lib,gcc,gcc,-O2 -g))
+$(eval $(call host_lib,clang,clang,-O2 -g))
+$(eval $(call host_lib,asan,clang,$(SAN_ASAN)))
+$(eval $(call host_lib,ubsan,clang,$(SAN_UBSAN)))
+$(eval $(call host_lib,tsan,clang,$(SAN_TSAN)))
+$(eval $(call host_lib,cov,gcc,-O0 -g --coverage))
+
+all: kernel
+kernel: $(BUILD)/gcc/libmt.a $(BUILD)/gcc/libmt_posix.a $(BUILD)/clang/libmt.a $(BUILD)/clang/libmt_posix.a
+	@echo "kernel: built with gcc and clang, warnings as errors"
+
+# ---------------------------------------------------------------- tests
+TEST_SRC := $(wildcard tests/*.cpp)
+TEST_HDR := $(wildcard tests/*.h)
+
+# $(call test_bin,NAME,CXX,FLAGS)
+define test_bin
+$(BUILD)/$(1)/mt_tests: $(TEST_SRC) $(TEST_HDR) $(BUILD)/$(1)/libmt.a $(BUILD)/$(1)/libmt_posix.a
+	$(2) $(WARN_CXX) $(3) $(KERNEL_INC) -Ihal_posix -Itests $(TEST_SRC) \
+	    $(BUILD)/$(1)/libmt_posix.a $(BUILD)/$(1)/libmt.a -lgtest -lgtest_main -pthread -o $$@
+endef
+$(eval $(call test_bin,gcc,g++,-O2 -g))
+$(eval $(call test_bin,clang,clang++,-O2 -g))
+$(eval $(call test_bin,asan,clang++,$(SAN_ASAN)))
+$(eval $(call test_bin,ubsan,clang++,$(SAN_UBSAN)))
+$(eval $(call test_bin,tsan,clang++,$(SAN_TSAN)))
+
+deps-test:
+	@tools/bootstrap.sh test
+
+# The suite runs once per build; stress tests run under TSan (and everywhere).
+test: deps-test
+	@$(MAKE) --no-print-directory -j$(NPROC) $(BUILD)/gcc/mt_tests $(BUILD)/clang/mt_tests \
+	    $(BUILD)/asan/mt_tests $(BUILD)/ubsan/mt_tests $(BUILD)/tsan/mt_tests
+	@set -e; for v in gcc clang asan ubsan tsan; do \
+	    echo "== mt_tests ($$v)"; \
+	    TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" ASAN_OPTIONS=detect_leaks=1 \
+	    $(BUILD)/$$v/mt_tests --gtest_brief=1; \
+	done
+
+test-fast: $(BUILD)/gcc/mt_tests
+	$(BUILD)/gcc/mt_tests
+
+# ---------------------------------------------------------------- cross
+ARM_CC    := arm-none-eabi-gcc
+ARM_FLAGS := -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -Os -ffunction-sections \
+             -fdata-sections
+deps-cross:
+	@tools/bootstrap.sh cross
+
+cross: deps-cross
+	@mkdir -p $(BUILD)/cross
+	@set -e; for f in $(KERNEL_SRC); do \
+	    m=$$(basename $$f .c); \
+	    $(ARM_CC) $(ARM_FLAGS) $(WARN_C) $(KERNEL_INC) -Ikernel/src -c $$f -o $(BUILD)/cross/$$m.o; \
+	done
+	@echo "Cortex-M4 (-mcpu=cortex-m4 -mthumb -Os), bytes per module:"
+	@arm-none-eabi-size $(BUILD)/cross/*.o | tee $(BUILD)/cross/sizes.txt
+
+# ---------------------------------------------------------------- lint, format
+deps-lint:
+	@tools/bootstrap.sh lint
+
+lint: deps-lint
+	@tools/lint.sh
+
+format-check: deps-lint
+	@tools/format-check.sh
+
+# ---------------------------------------------------------------- demo
+$(BUILD)/demo/mt_demo: tools/demo/demo.c $(BUILD)/gcc/libmt.a $(BUILD)/gcc/libmt_posix.a
+	@mkdir -p $(@D)
+	gcc $(WARN_POSIX) -O2 -g $(KERNEL_INC) -Ihal_posix tools/demo/demo.c \
+	    $(BUILD)/gcc/libmt_posix.a $(BUILD)/gcc/libmt.a -pthread -o $@
+
+demo: $(BUILD)/demo/mt_demo
+	$(BUILD)/demo/mt_demo $(DEMO_ARGS)
+
+clean:
+	rm -rf $(BUILD)
+
+# ---------------------------------------------------------------- sub-makefiles (proofs, tla, bench, firmware)
+-include proofs/proofs.mk
+-include tla/tla.mk
+-include bench/bench.mk
+-include hal_chibios/mk/targets.mk

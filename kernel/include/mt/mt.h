@@ -1,0 +1,19 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file mt/mt.h
+ * @brief Umbrella header of the Metronome kernel.
+ */
+#ifndef MT_MT_H
+#define MT_MT_H
+
+#include "mt/config.h"
+#include "mt/objring.h"
+#include "mt/proc.h"
+#include "mt/ring.h"
+#include "mt/sched.h"
+#include "mt/sem.h"
+#include "mt/status.h"
+#include "mt/time.h"
+#include "mt_port.h"
+
+#endif /* MT_MT_H */

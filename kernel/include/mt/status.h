@@ -1,0 +1,47 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file mt/status.h
+ * @brief The one status enum of the kernel.
+ *
+ * Every value is distinct and explicit; the list ends with a count sentinel.
+ * A status reports bad input or a full/empty/busy condition to the caller.
+ * Caller bugs (NULL pointers, wrong lock state) are contract violations, not
+ * statuses: they halt through the port in checked builds.
+ */
+#ifndef MT_STATUS_H
+#define MT_STATUS_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+    MT_OK = 0,               /**< Done. */
+    MT_E_INVALID = 1,        /**< An argument value is outside its documented range. */
+    MT_E_FULL = 2,           /**< No room: a ring, a proc set or a table is full. */
+    MT_E_EMPTY = 3,          /**< Nothing to read. */
+    MT_E_DUPLICATE = 4,      /**< The same entry is already registered. */
+    MT_E_TIMEOUT = 5,        /**< A wait ended without the event. */
+    MT_E_BUSY = 6,           /**< The object is in use (second waiter, re-entrant dispatch). */
+    MT_E_RANGE = 7,          /**< A count exceeds what the object holds (advance, commit). */
+    MT_E_TASK_ORDER = 8,     /**< Task table: priorities are not non-decreasing. */
+    MT_E_TASK_RATE = 9,      /**< Task table: rate zero for a normal task, non-zero for a fast
+                                  one, or above the loop rate. */
+    MT_E_TASK_BUDGET = 10,   /**< Task table: zero budget on a normal task, or a budget longer
+                                  than the loop period. */
+    MT_E_TASK_COUNT = 11,    /**< Task table: no tasks, or more than MT_CFG_SCHED_MAX_TASKS. */
+    MT_E_LOOP_RATE = 12,     /**< Scheduler: loop rate outside [MT_SCHED_RATE_MIN, MAX]. */
+    MT_E_TASK_FN = 13,       /**< Task table: an entry has no function. */
+    MT_W_DROPPED_OLDEST = 14, /**< Pushed; the oldest unread object will be discarded by the
+                                   consumer (counted on both sides). */
+    MT_STATUS_COUNT = 15     /**< Number of statuses (sentinel, not a status). */
+} mt_status_t;
+
+/** Short stable name of a status ("MT_E_FULL"); "MT_STATUS_?" for an unknown value. */
+const char *mt_status_str(mt_status_t st);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MT_STATUS_H */

@@ -1,0 +1,54 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file mt_ring_idx.h
+ * @brief Mirror-index arithmetic shared by the byte ring and the object ring
+ *        (kernel-private). See mt_spec_ring.h for the logic twins.
+ */
+#ifndef MT_RING_IDX_H
+#define MT_RING_IDX_H
+
+#include <stdint.h>
+
+#include "mt_spec_ring.h"
+
+/** Largest ring size in slots: 2*S must fit in 32 bits with room to spare. */
+#define MT_RING_SLOTS_MAX 0x40000000u
+
+/** Number of items between read index r and write index w. */
+/*@ requires 1 <= s <= MT_RING_SLOTS_MAX;
+    requires MtIdxOk(w, s) && MtIdxOk(r, s);
+    assigns \nothing;
+    ensures \result == MtIdxCount(w, r, s);
+*/
+static inline uint32_t mt_idx_count(uint32_t w, uint32_t r, uint32_t s)
+{
+    return (w >= r) ? (w - r) : ((w + (2u * s)) - r);
+}
+
+/** Index i moved forward by n (n <= s). */
+/*@ requires 1 <= s <= MT_RING_SLOTS_MAX;
+    requires MtIdxOk(i, s);
+    requires n <= s;
+    assigns \nothing;
+    ensures \result == MtIdxAdd(i, n, s);
+    ensures MtIdxOk(\result, s);
+*/
+static inline uint32_t mt_idx_add(uint32_t i, uint32_t n, uint32_t s)
+{
+    uint32_t j = i + n;
+    return (j < (2u * s)) ? j : (j - (2u * s));
+}
+
+/** Storage slot of index i. */
+/*@ requires 1 <= s <= MT_RING_SLOTS_MAX;
+    requires MtIdxOk(i, s);
+    assigns \nothing;
+    ensures \result == MtIdxSlot(i, s);
+    ensures 0 <= \result < s;
+*/
+static inline uint32_t mt_idx_slot(uint32_t i, uint32_t s)
+{
+    return (i < s) ? i : (i - s);
+}
+
+#endif /* MT_RING_IDX_H */

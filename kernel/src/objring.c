@@ -1,0 +1,212 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file objring.c
+ * @brief SPSC object ring with a consumer-performed drop-oldest (see mt/objring.h).
+ */
+#include "mt/objring.h"
+
+#include "mt_atomic.h"
+#include "mt_ring_idx.h"
+
+mt_status_t mt_oring_init(mt_oring_t *r, void *storage, uint32_t elem, uint32_t cap)
+{
+    r->tail = 0u;
+    r->head_cache = 0u;
+    r->rejected = 0u;
+    r->head = 0u;
+    r->tail_cache = 0u;
+    r->lost = 0u;
+    r->buf = (uint8_t *)storage;
+    r->cap = 0u;
+    r->slots = 1u;
+    r->elem = 1u;
+    if ((elem < 1u) || (cap < 1u) || (cap >= MT_ORING_BYTES_MAX) ||
+        ((uint64_t)elem * ((uint64_t)cap + 1u) > MT_ORING_BYTES_MAX)) {
+        return MT_E_INVALID;
+    }
+    r->cap = cap;
+    r->slots = cap + 1u;
+    r->elem = elem;
+    return MT_OK;
+}
+
+/* Byte address of slot `slot`. */
+/*@ requires MtORingInv(r);
+    requires 0 <= slot < r->slots;
+    assigns \nothing;
+    ensures \result == r->buf + slot * r->elem;
+    ensures \valid(\result + (0 .. r->elem - 1));
+*/
+static uint8_t *slot_ptr(const mt_oring_t *r, uint32_t slot)
+{
+    return r->buf + ((uint64_t)slot * r->elem);
+}
+
+/*@ requires \valid(dst + (0 .. n - 1)) && \valid_read(src + (0 .. n - 1));
+    requires \separated(dst + (0 .. n - 1), src + (0 .. n - 1));
+    assigns dst[0 .. n - 1];
+    ensures \forall integer k; 0 <= k < n ==> dst[k] == src[k];
+*/
+static void copy_bytes(uint8_t *dst, const uint8_t *src, uint32_t n)
+{
+    uint32_t k;
+
+    /*@ loop invariant 0 <= k <= n;
+        loop invariant \forall integer j; 0 <= j < k ==> dst[j] == src[j];
+        loop assigns k, dst[0 .. n - 1];
+        loop variant n - k;
+    */
+    for (k = 0u; k < n; k++) {
+        dst[k] = src[k];
+    }
+}
+
+/* Producer's count, with a fresh head when the cached one says >= cap. */
+/*@ requires MtORingInv(r);
+    assigns r->head_cache;
+    ensures MtORingInv(r);
+    ensures \result == MtIdxCount(r->tail, r->head_cache, r->slots);
+    ensures \result < r->cap ==> MtORingCount(r) <= \result;
+    ensures \result >= r->cap ==> \result == MtORingCount(r);
+*/
+static uint32_t producer_count(mt_oring_t *r)
+{
+    uint32_t n = mt_idx_count(r->tail, r->head_cache, r->slots);
+    if (n >= r->cap) {
+        r->head_cache = mt_load_acquire_u32(&r->head);
+        n = mt_idx_count(r->tail, r->head_cache, r->slots);
+    }
+    return n;
+}
+
+/* Write obj at the tail slot and publish it (data before index). */
+/*@ requires MtORingInv(r);
+    requires MtORingCount(r) <= r->cap;
+    requires MtIdxCount(r->tail, r->head_cache, r->slots) <= r->cap;
+    requires \valid_read(obj + (0 .. r->elem - 1));
+    requires \separated(obj + (0 .. r->elem - 1), r, r->buf + (0 .. r->slots * r->elem - 1));
+    assigns r->tail, r->buf[0 .. r->slots * r->elem - 1];
+    ensures MtORingInv(r);
+    ensures r->tail == MtIdxAdd(\old(r->tail), 1, r->slots);
+*/
+static void put(mt_oring_t *r, const uint8_t *obj)
+{
+    copy_bytes(slot_ptr(r, mt_idx_slot(r->tail, r->slots)), obj, r->elem);
+    mt_store_release_u32(&r->tail, mt_idx_add(r->tail, 1u, r->slots));
+}
+
+/*@ requires MtORingInv(r);
+    assigns r->rejected;
+    ensures MtORingInv(r);
+*/
+static void note_rejected(mt_oring_t *r)
+{
+    if (r->rejected < 0xFFFFFFFFu) {
+        r->rejected++;
+    }
+}
+
+mt_status_t mt_oring_push(mt_oring_t *r, const void *obj)
+{
+    if (producer_count(r) >= r->cap) {
+        note_rejected(r);
+        return MT_E_FULL;
+    }
+    put(r, (const uint8_t *)obj);
+    return MT_OK;
+}
+
+mt_status_t mt_oring_push_drop_oldest(mt_oring_t *r, const void *obj)
+{
+    uint32_t n = producer_count(r);
+
+    if (n > r->cap) {
+        note_rejected(r); /* the consumer has not taken the previous drop yet */
+        return MT_E_FULL;
+    }
+    /* n == cap: the spare slot is free (storage has cap + 1 slots) */
+    put(r, (const uint8_t *)obj);
+    return (n == r->cap) ? MT_W_DROPPED_OLDEST : MT_OK;
+}
+
+uint32_t mt_oring_space(mt_oring_t *r)
+{
+    uint32_t n;
+
+    r->head_cache = mt_load_acquire_u32(&r->head);
+    n = mt_idx_count(r->tail, r->head_cache, r->slots);
+    return (n >= r->cap) ? 0u : (r->cap - n);
+}
+
+/* Consumer: load tail; if more than cap objects are published, discard the
+ * oldest (the drop requested by a drop-oldest push) and count it. Returns the
+ * number of retained objects. */
+/*@ requires MtORingInv(r);
+    assigns r->head, r->tail_cache, r->lost;
+    ensures MtORingInv(r);
+    ensures \result == MtORingCount(r) && \result <= r->cap;
+    ensures r->tail_cache == r->tail;
+    ensures MtIdxCount(r->tail, \old(r->head), r->slots) <= r->cap ==> r->head == \old(r->head);
+    ensures MtIdxCount(r->tail, \old(r->head), r->slots) > r->cap ==> r->head == MtIdxAdd(\old(r->head), 1, r->slots);
+*/
+static uint32_t consumer_sync(mt_oring_t *r)
+{
+    uint32_t n;
+
+    r->tail_cache = mt_load_acquire_u32(&r->tail);
+    n = mt_idx_count(r->tail_cache, r->head, r->slots);
+    if (n > r->cap) {
+        /* the slot of the oldest object is free again once head moves */
+        mt_store_release_u32(&r->head, mt_idx_add(r->head, 1u, r->slots));
+        if (r->lost < 0xFFFFFFFFu) {
+            r->lost++;
+        }
+        n--;
+    }
+    return n;
+}
+
+uint32_t mt_oring_available(mt_oring_t *r)
+{
+    uint32_t n;
+
+    r->tail_cache = mt_load_acquire_u32(&r->tail);
+    n = mt_idx_count(r->tail_cache, r->head, r->slots);
+    return (n > r->cap) ? r->cap : n;
+}
+
+mt_status_t mt_oring_pop(mt_oring_t *r, void *out)
+{
+    if (consumer_sync(r) == 0u) {
+        return MT_E_EMPTY;
+    }
+    copy_bytes((uint8_t *)out, slot_ptr(r, mt_idx_slot(r->head, r->slots)), r->elem);
+    /* copy done before the slot is released */
+    mt_store_release_u32(&r->head, mt_idx_add(r->head, 1u, r->slots));
+    return MT_OK;
+}
+
+mt_status_t mt_oring_peek(mt_oring_t *r, void *out)
+{
+    if (consumer_sync(r) == 0u) {
+        return MT_E_EMPTY;
+    }
+    copy_bytes((uint8_t *)out, slot_ptr(r, mt_idx_slot(r->head, r->slots)), r->elem);
+    return MT_OK;
+}
+
+mt_status_t mt_oring_update_front(mt_oring_t *r, const void *obj)
+{
+    if (consumer_sync(r) == 0u) {
+        return MT_E_EMPTY;
+    }
+    copy_bytes(slot_ptr(r, mt_idx_slot(r->head, r->slots)), (const uint8_t *)obj, r->elem);
+    return MT_OK;
+}
+
+uint32_t mt_oring_flush(mt_oring_t *r)
+{
+    uint32_t n = consumer_sync(r);
+    mt_store_release_u32(&r->head, r->tail_cache);
+    return n;
+}

@@ -1,0 +1,239 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file ring.c
+ * @brief SPSC byte ring (see mt/ring.h for the operating rules).
+ */
+#include "mt/ring.h"
+
+#include "mt_atomic.h"
+#include "mt_ring_idx.h"
+
+mt_status_t mt_bring_init(mt_bring_t *r, uint8_t *storage, uint32_t cap)
+{
+    r->tail = 0u;
+    r->head_cache = 0u;
+    r->reserved = 0u;
+    r->head = 0u;
+    r->tail_cache = 0u;
+    r->unused_ = 0u;
+    r->buf = storage;
+    if ((cap < 1u) || (cap > MT_BRING_CAP_MAX)) {
+        r->cap = 0u;
+        return MT_E_INVALID;
+    }
+    r->cap = cap;
+    return MT_OK;
+}
+
+/* Producer: free bytes seen with the cached head; reload head only when the
+ * cached view has fewer than `want` free bytes. */
+/*@ requires MtBRingInv(r);
+    assigns r->head_cache;
+    ensures MtBRingInv(r);
+    ensures \result == r->cap - MtIdxCount(r->tail, r->head_cache, r->cap);
+    ensures \result >= \min(want, r->cap - MtBRingCount(r));
+    ensures \result <= r->cap - MtBRingCount(r);
+*/
+static uint32_t producer_free(mt_bring_t *r, uint32_t want)
+{
+    uint32_t free_now = r->cap - mt_idx_count(r->tail, r->head_cache, r->cap);
+    if (free_now < want) {
+        r->head_cache = mt_load_acquire_u32(&r->head);
+        free_now = r->cap - mt_idx_count(r->tail, r->head_cache, r->cap);
+    }
+    return free_now;
+}
+
+/* Consumer: readable bytes seen with the cached tail, reloaded when short. */
+/*@ requires MtBRingInv(r);
+    assigns r->tail_cache;
+    ensures MtBRingInv(r);
+    ensures \result == MtIdxCount(r->tail_cache, r->head, r->cap);
+    ensures \result >= \min(want, MtBRingCount(r));
+    ensures \result <= MtBRingCount(r);
+*/
+static uint32_t consumer_avail(mt_bring_t *r, uint32_t want)
+{
+    uint32_t avail = mt_idx_count(r->tail_cache, r->head, r->cap);
+    if (avail < want) {
+        r->tail_cache = mt_load_acquire_u32(&r->tail);
+        avail = mt_idx_count(r->tail_cache, r->head, r->cap);
+    }
+    return avail;
+}
+
+uint32_t mt_bring_space(mt_bring_t *r)
+{
+    r->head_cache = mt_load_acquire_u32(&r->head);
+    return (r->cap - mt_idx_count(r->tail, r->head_cache, r->cap)) - r->reserved;
+}
+
+uint32_t mt_bring_available(mt_bring_t *r)
+{
+    r->tail_cache = mt_load_acquire_u32(&r->tail);
+    return mt_idx_count(r->tail_cache, r->head, r->cap);
+}
+
+uint32_t mt_bring_write(mt_bring_t *r, const uint8_t *src, uint32_t len)
+{
+    uint32_t free_now = producer_free(r, len);
+    uint32_t n = (len < free_now) ? len : free_now;
+    uint32_t slot = mt_idx_slot(r->tail, r->cap);
+    uint32_t first = r->cap - slot;
+    uint32_t k;
+
+    if (first > n) {
+        first = n;
+    }
+    /*@ loop invariant 0 <= k <= first;
+        loop invariant \forall integer j; 0 <= j < k ==> r->buf[slot + j] == src[j];
+        loop assigns k, r->buf[slot .. slot + first - 1];
+        loop variant first - k;
+    */
+    for (k = 0u; k < first; k++) {
+        r->buf[slot + k] = src[k];
+    }
+    /*@ loop invariant first <= k <= n;
+        loop invariant \forall integer j; 0 <= j < first ==> r->buf[slot + j] == src[j];
+        loop invariant \forall integer j; first <= j < k ==> r->buf[j - first] == src[j];
+        loop assigns k, r->buf[0 .. n - first - 1];
+        loop variant n - k;
+    */
+    for (k = first; k < n; k++) {
+        r->buf[k - first] = src[k];
+    }
+    /* Data before index: the release store publishes the bytes above. */
+    mt_store_release_u32(&r->tail, mt_idx_add(r->tail, n, r->cap));
+    return n;
+}
+
+uint32_t mt_bring_reserve(mt_bring_t *r, mt_iovec_t vec[2], uint32_t len)
+{
+    uint32_t free_now = producer_free(r, len);
+    uint32_t n = (len < free_now) ? len : free_now;
+    uint32_t slot = mt_idx_slot(r->tail, r->cap);
+    uint32_t first = r->cap - slot;
+    uint32_t segs;
+
+    r->reserved = n;
+    vec[1].base = r->buf;
+    vec[1].len = 0u;
+    if (n == 0u) {
+        vec[0].base = r->buf + slot;
+        vec[0].len = 0u;
+        segs = 0u;
+    } else if (first >= n) {
+        vec[0].base = r->buf + slot;
+        vec[0].len = n;
+        segs = 1u;
+    } else {
+        vec[0].base = r->buf + slot;
+        vec[0].len = first;
+        vec[1].len = n - first;
+        segs = 2u;
+    }
+    return segs;
+}
+
+mt_status_t mt_bring_commit(mt_bring_t *r, uint32_t n)
+{
+    if (n > r->reserved) {
+        return MT_E_RANGE;
+    }
+    r->reserved = 0u;
+    mt_store_release_u32(&r->tail, mt_idx_add(r->tail, n, r->cap));
+    return MT_OK;
+}
+
+/* Copy n readable bytes starting at the read index into dst (no consume). */
+/*@ requires MtBRingInv(r);
+    requires n <= MtBRingCount(r);
+    requires \valid(dst + (0 .. n - 1));
+    requires \separated(dst + (0 .. n - 1), r, r->buf + (0 .. r->cap - 1));
+    assigns dst[0 .. n - 1];
+    ensures \forall integer k; 0 <= k < n ==> dst[k] == MtBRingByte(r, k);
+*/
+static void copy_out(const mt_bring_t *r, uint8_t *dst, uint32_t n)
+{
+    uint32_t slot = mt_idx_slot(r->head, r->cap);
+    uint32_t first = r->cap - slot;
+    uint32_t k;
+
+    if (first > n) {
+        first = n;
+    }
+    /*@ loop invariant 0 <= k <= first;
+        loop invariant \forall integer j; 0 <= j < k ==> dst[j] == r->buf[slot + j];
+        loop assigns k, dst[0 .. first - 1];
+        loop variant first - k;
+    */
+    for (k = 0u; k < first; k++) {
+        dst[k] = r->buf[slot + k];
+    }
+    /*@ loop invariant first <= k <= n;
+        loop invariant \forall integer j; 0 <= j < first ==> dst[j] == r->buf[slot + j];
+        loop invariant \forall integer j; first <= j < k ==> dst[j] == r->buf[j - first];
+        loop assigns k, dst[first .. n - 1];
+        loop variant n - k;
+    */
+    for (k = first; k < n; k++) {
+        dst[k] = r->buf[k - first];
+    }
+}
+
+uint32_t mt_bring_peek(mt_bring_t *r, uint8_t *dst, uint32_t len)
+{
+    uint32_t avail = consumer_avail(r, len);
+    uint32_t n = (len < avail) ? len : avail;
+    copy_out(r, dst, n);
+    return n;
+}
+
+uint32_t mt_bring_read(mt_bring_t *r, uint8_t *dst, uint32_t len)
+{
+    uint32_t n = mt_bring_peek(r, dst, len);
+    /* Reading done before the index moves: the release store frees the space. */
+    mt_store_release_u32(&r->head, mt_idx_add(r->head, n, r->cap));
+    return n;
+}
+
+mt_status_t mt_bring_advance(mt_bring_t *r, uint32_t n)
+{
+    uint32_t avail = consumer_avail(r, n);
+    if (n > avail) {
+        return MT_E_RANGE;
+    }
+    mt_store_release_u32(&r->head, mt_idx_add(r->head, n, r->cap));
+    return MT_OK;
+}
+
+uint32_t mt_bring_peek_vec(mt_bring_t *r, mt_iovec_t vec[2])
+{
+    uint32_t n = mt_bring_available(r);
+    uint32_t slot = mt_idx_slot(r->head, r->cap);
+    uint32_t first = r->cap - slot;
+    uint32_t segs;
+
+    vec[0].base = r->buf + slot;
+    vec[1].base = r->buf;
+    vec[1].len = 0u;
+    if (n == 0u) {
+        vec[0].len = 0u;
+        segs = 0u;
+    } else if (first >= n) {
+        vec[0].len = n;
+        segs = 1u;
+    } else {
+        vec[0].len = first;
+        vec[1].len = n - first;
+        segs = 2u;
+    }
+    return segs;
+}
+
+uint32_t mt_bring_flush(mt_bring_t *r)
+{
+    uint32_t n = mt_bring_available(r);
+    mt_store_release_u32(&r->head, r->tail_cache);
+    return n;
+}

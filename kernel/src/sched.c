@@ -1,0 +1,441 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file sched.c
+ * @brief Tick scheduler (see mt/sched.h for the semantics).
+ */
+#include "mt/sched.h"
+
+#include "mt_invoke.h"
+
+#define U32_MAX_ 0xFFFFFFFFu
+
+/*@ assigns \nothing;
+    ensures \result == (v > 0xFFFFFFFF ? 0xFFFFFFFF : v);
+*/
+static uint32_t clamp_u32(uint64_t v)
+{
+    return (v > U32_MAX_) ? U32_MAX_ : (uint32_t)v;
+}
+
+/*@ assigns \nothing;
+    ensures \result == (a + b <= 0xFFFFFFFFFFFFFFFF ? a + b : 0xFFFFFFFFFFFFFFFF);
+*/
+static uint64_t sat_add_u64(uint64_t a, uint64_t b)
+{
+    return (a <= (UINT64_MAX - b)) ? (a + b) : UINT64_MAX;
+}
+
+mt_status_t mt_sched_check_entry(const mt_task_t *tasks, uint32_t n, uint32_t i,
+                                 uint32_t loop_rate_hz)
+{
+    const mt_task_t *t = &tasks[i];
+    uint32_t period = 1000000u / loop_rate_hz;
+
+    (void)n;
+    if (t->fn == (mt_task_fn_t)0) {
+        return MT_E_TASK_FN;
+    }
+    if (t->priority < MT_SCHED_FAST_PRIO_LIMIT) {
+        if (t->rate_mhz != 0u) {
+            return MT_E_TASK_RATE;
+        }
+    } else {
+        if ((t->rate_mhz < 1u) || (t->rate_mhz > (loop_rate_hz * 1000u))) {
+            return MT_E_TASK_RATE;
+        }
+        if (t->budget_us < 1u) {
+            return MT_E_TASK_BUDGET;
+        }
+    }
+    if (t->budget_us > period) {
+        return MT_E_TASK_BUDGET;
+    }
+    if ((i > 0u) && (tasks[i - 1u].priority > t->priority)) {
+        return MT_E_TASK_ORDER;
+    }
+    return MT_OK;
+}
+
+mt_status_t mt_sched_validate(const mt_task_t *tasks, uint32_t n, uint32_t loop_rate_hz,
+                              uint32_t *bad_index)
+{
+    uint32_t i;
+    mt_status_t st;
+
+    if ((loop_rate_hz < MT_SCHED_RATE_MIN) || (loop_rate_hz > MT_SCHED_RATE_MAX)) {
+        *bad_index = n;
+        return MT_E_LOOP_RATE;
+    }
+    if ((n < 1u) || (n > MT_CFG_SCHED_MAX_TASKS)) {
+        *bad_index = n;
+        return MT_E_TASK_COUNT;
+    }
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant \forall integer j; 0 <= j < i ==> MtTaskOk(tasks + j, loop_rate_hz);
+        loop invariant \forall integer j; 0 <= j < i - 1 ==> tasks[j].priority <= tasks[j + 1].priority;
+        loop assigns i, st;
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
+        st = mt_sched_check_entry(tasks, n, i, loop_rate_hz);
+        if (st != MT_OK) {
+            *bad_index = i;
+            return st;
+        }
+    }
+    return MT_OK;
+}
+
+mt_status_t mt_sched_init(mt_sched_t *s, const mt_task_t *tasks, uint32_t n,
+                          uint32_t loop_rate_hz, uint32_t *bad_index)
+{
+    uint32_t i;
+    mt_status_t st = mt_sched_validate(tasks, n, loop_rate_hz, bad_index);
+
+    if (st != MT_OK) {
+        return st;
+    }
+    s->tasks = tasks;
+    s->ntasks = n;
+    s->loop_rate_hz = loop_rate_hz;
+    s->period_us = 1000000u / loop_rate_hz;
+    s->current = MT_SCHED_IDLE;
+    s->tick = 0u;
+    s->run_tick = 0u;
+    /*@ loop invariant 0 <= i <= MT_CFG_SCHED_MAX_TASKS;
+        loop invariant \forall integer j; 0 <= j < i ==> j < n ==>
+            s->st[j].interval == MtInterval(s->tasks + j, loop_rate_hz) && s->st[j].runs == 0 &&
+            s->st[j].last_run == 0 && s->st[j].slips == 0 && s->st[j].overruns == 0;
+        loop invariant \forall integer j; 0 <= j < i ==> s->st[j].interval >= 1;
+        loop assigns i, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1];
+        loop variant MT_CFG_SCHED_MAX_TASKS - i;
+    */
+    for (i = 0u; i < MT_CFG_SCHED_MAX_TASKS; i++) {
+        mt_task_state_t *e = &s->st[i];
+        e->last_run = 0u;
+        e->interval = 1u;
+        if ((i < n) && (tasks[i].priority >= MT_SCHED_FAST_PRIO_LIMIT)) {
+            /* rate <= loop rate (validated), so the interval is >= 1 */
+            e->interval = (loop_rate_hz * 1000u) / tasks[i].rate_mhz;
+        }
+        e->min_us = 0u;
+        e->max_us = 0u;
+        e->overruns = 0u;
+        e->runs = 0u;
+        e->total_us = 0u;
+        e->slips = 0u;
+        e->not_achieved = 0u;
+        e->budget_skips = 0u;
+    }
+    s->extra_us = 0u;
+    s->clean_loops = 0u;
+    s->late_in_loop = 0u;
+    s->spare_us = 0u;
+    s->spare_ticks = 0u;
+    s->filtered_loop_q8 = s->period_us * 256u;
+    s->loops = 0u;
+    s->loop_total_us = 0u;
+    s->loop_min_us = 0u;
+    s->loop_max_us = 0u;
+    s->long_loops = 0u;
+    s->last_sample_us = 0u;
+    s->task_start_us = 0u;
+    s->task_allowed_us = 0u;
+    return MT_OK;
+}
+
+void mt_sched_tick(mt_sched_t *s)
+{
+    s->tick++;
+}
+
+/* Account a run of task i that took taken_us against allowed_us. */
+/*@ requires MtSchedInv(s);
+    requires i < s->ntasks;
+    requires s->st[i].runs < s->tick;
+    assigns s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us,
+            s->st[i].overruns, s->st[i].last_run;
+    ensures s->st[i].runs == \old(s->st[i].runs) + 1;
+    ensures s->st[i].last_run == s->tick;
+*/
+static void note_run(mt_sched_t *s, uint32_t i, uint64_t taken_us, uint32_t allowed_us)
+{
+    mt_task_state_t *e = &s->st[i];
+    uint32_t t = clamp_u32(taken_us);
+
+    if ((e->runs == 0u) || (t < e->min_us)) {
+        e->min_us = t;
+    }
+    if (t > e->max_us) {
+        e->max_us = t;
+    }
+    e->total_us = sat_add_u64(e->total_us, taken_us);
+    if ((taken_us > allowed_us) && (e->overruns < U32_MAX_)) {
+        e->overruns++;
+    }
+    e->runs++;
+    e->last_run = s->tick;
+}
+
+/* Run task i with allowance allowed_us; returns the time it took. */
+/*@ requires MtSchedInv(s);
+    requires i < s->ntasks;
+    requires s->st[i].runs < s->tick;
+    assigns s->current, s->task_start_us, s->task_allowed_us, MtPortNow,
+            s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us,
+            s->st[i].overruns, s->st[i].last_run;
+    ensures s->current == MT_SCHED_IDLE;
+    ensures s->st[i].runs == \old(s->st[i].runs) + 1;
+    ensures s->st[i].last_run == s->tick;
+*/
+static uint64_t run_task(mt_sched_t *s, uint32_t i, uint32_t allowed_us)
+{
+    uint64_t t0 = mt_port_now_us();
+    uint64_t taken;
+
+    s->task_start_us = t0;
+    s->task_allowed_us = allowed_us;
+    s->current = (int32_t)i;
+    mt_invoke(s->tasks[i].fn, s->tasks[i].arg);
+    s->current = MT_SCHED_IDLE;
+    taken = mt_port_now_us() - t0;
+    note_run(s, i, taken, allowed_us);
+    return taken;
+}
+
+/* Slip and lateness accounting for a normal task that runs dt ticks after its
+ * last run (dt >= interval). */
+/*@ requires MtSchedInv(s);
+    requires i < s->ntasks;
+    requires dt >= s->st[i].interval;
+    assigns s->st[i].slips, s->st[i].not_achieved, s->late_in_loop;
+    ensures s->st[i].slips == (\old(s->st[i].slips) + (dt / s->st[i].interval - 1) <= 0xFFFFFFFFFFFFFFFF ?
+                               \old(s->st[i].slips) + (dt / s->st[i].interval - 1) : 0xFFFFFFFFFFFFFFFF);
+*/
+static void note_release(mt_sched_t *s, uint32_t i, uint64_t dt)
+{
+    mt_task_state_t *e = &s->st[i];
+    uint64_t iv = e->interval;
+
+    if (dt >= (2u * iv)) {
+        /* releases in dt = floor(dt / interval); all but the one served now slipped */
+        e->slips = sat_add_u64(e->slips, (dt / iv) - 1u);
+    }
+    if (dt >= ((uint64_t)MT_SCHED_SLOWDOWN * iv)) {
+        e->not_achieved = sat_add_u64(e->not_achieved, 1u);
+        if (s->late_in_loop < U32_MAX_) {
+            s->late_in_loop++;
+        }
+    }
+}
+
+uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us)
+{
+    uint32_t avail = time_available_us;
+    uint32_t i;
+
+    if (s->run_tick == s->tick) {
+        return avail; /* this tick has been run already */
+    }
+    s->run_tick = s->tick;
+    /*@ loop invariant 0 <= i <= s->ntasks;
+        loop invariant MtSchedInv(s) && s->run_tick == s->tick;
+        loop invariant avail <= time_available_us;
+        loop invariant s->current == MT_SCHED_IDLE;
+        loop assigns i, avail, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop,
+                     s->task_start_us, s->task_allowed_us, MtPortNow;
+        loop variant s->ntasks - i;
+    */
+    for (i = 0u; i < s->ntasks; i++) {
+        const mt_task_t *t = &s->tasks[i];
+        uint32_t allowed;
+        uint64_t taken;
+
+        if (t->priority < MT_SCHED_FAST_PRIO_LIMIT) {
+            /* fast task: every tick, whatever is left */
+            allowed = (t->budget_us != 0u) ? t->budget_us : s->period_us;
+        } else {
+            uint64_t dt = s->tick - s->st[i].last_run;
+            if (dt < s->st[i].interval) {
+                continue; /* not due */
+            }
+            if (t->budget_us > avail) {
+                /* due but does not fit: skipped, stays due, scan goes on */
+                s->st[i].budget_skips = sat_add_u64(s->st[i].budget_skips, 1u);
+                continue;
+            }
+            note_release(s, i, dt);
+            allowed = t->budget_us;
+        }
+        taken = run_task(s, i, allowed);
+        avail = (taken >= avail) ? 0u : (avail - (uint32_t)taken);
+    }
+    return avail;
+}
+
+void mt_sched_end_loop(mt_sched_t *s, uint32_t spare_us)
+{
+    s->spare_us += spare_us;
+    s->spare_ticks++;
+    if (s->spare_ticks >= MT_SCHED_SPARE_WINDOW) {
+        /* exponential window: halve both */
+        s->spare_us /= 2u;
+        s->spare_ticks /= 2u;
+    }
+    if (s->late_in_loop > 0u) {
+        s->extra_us = ((s->extra_us + MT_SCHED_EXTRA_STEP_US) <= MT_SCHED_EXTRA_MAX_US)
+                          ? (s->extra_us + MT_SCHED_EXTRA_STEP_US)
+                          : MT_SCHED_EXTRA_MAX_US;
+        s->clean_loops = 0u;
+    } else if (s->extra_us > 0u) {
+        s->clean_loops++;
+        if (s->clean_loops > MT_SCHED_CLEAN_LOOPS) {
+            s->clean_loops = 0u;
+            s->extra_us = (s->extra_us > MT_SCHED_EXTRA_DECAY_US)
+                              ? (s->extra_us - MT_SCHED_EXTRA_DECAY_US)
+                              : 0u;
+        }
+    } else {
+        s->clean_loops = 0u;
+    }
+    s->late_in_loop = 0u;
+}
+
+void mt_sched_note_sample(mt_sched_t *s, uint64_t sample_us)
+{
+    if ((s->last_sample_us != 0u) && (sample_us >= s->last_sample_us)) {
+        uint32_t loop_us = clamp_u32(sample_us - s->last_sample_us);
+        /* loops longer than 1.2 periods + 10 ms are outliers for the filter */
+        uint32_t outlier = ((s->period_us / 5u) * 6u) + 10000u;
+        if ((s->loops == 0u) || (loop_us < s->loop_min_us)) {
+            s->loop_min_us = loop_us;
+        }
+        if (loop_us > s->loop_max_us) {
+            s->loop_max_us = loop_us;
+        }
+        if ((loop_us > ((s->period_us / 5u) * 6u)) && (s->long_loops < U32_MAX_)) {
+            s->long_loops++;
+        }
+        if (loop_us <= outlier) {
+            /* EMA 0.99 / 0.01 in Q8: f += (sample - f) / 100 */
+            uint64_t f = s->filtered_loop_q8;
+            uint64_t x = (uint64_t)loop_us * 256u;
+            f = (x >= f) ? (f + ((x - f) / 100u)) : (f - ((f - x) / 100u));
+            s->filtered_loop_q8 = clamp_u32(f);
+        }
+        s->loop_total_us = sat_add_u64(s->loop_total_us, loop_us);
+        s->loops = sat_add_u64(s->loops, 1u);
+    }
+    s->last_sample_us = sample_us;
+}
+
+void mt_sched_loop_once(mt_sched_t *s, mt_sample_wait_fn_t wait, void *ctx)
+{
+    uint64_t sample;
+    uint64_t now;
+    uint64_t elapsed;
+    uint32_t avail;
+    uint32_t left;
+
+    s->current = MT_SCHED_WAIT_SAMPLE;
+    sample = mt_invoke_u64(wait, ctx);
+    s->current = MT_SCHED_IDLE;
+    mt_sched_note_sample(s, sample);
+    mt_sched_tick(s);
+    now = mt_port_now_us();
+    elapsed = (now >= sample) ? (now - sample) : 0u;
+    avail = (elapsed >= s->period_us) ? 0u : (s->period_us - (uint32_t)elapsed);
+    avail += s->extra_us;
+    left = mt_sched_run(s, avail);
+    mt_sched_end_loop(s, left);
+}
+
+uint32_t mt_sched_time_available_us(const mt_sched_t *s)
+{
+    uint64_t now = mt_port_now_us();
+    uint64_t used;
+
+    if ((s->current < 0) || (now < s->task_start_us)) {
+        return 0u;
+    }
+    used = now - s->task_start_us;
+    return (used >= s->task_allowed_us) ? 0u : (s->task_allowed_us - (uint32_t)used);
+}
+
+uint32_t mt_sched_load_permille(const mt_sched_t *s)
+{
+    uint64_t mean_spare;
+
+    /* filtered loop rate below 95% of the loop rate: the loop is saturated */
+    if ((uint64_t)s->filtered_loop_q8 > (((uint64_t)s->period_us * 256u * 100u) / 95u)) {
+        return 1000u;
+    }
+    if (s->spare_ticks == 0u) {
+        return 0u;
+    }
+    mean_spare = s->spare_us / s->spare_ticks;
+    if (mean_spare >= s->period_us) {
+        return 0u; /* S-8: more spare time than the period means idle, not 100% */
+    }
+    return (uint32_t)(((s->period_us - mean_spare) * 1000u) / s->period_us);
+}
+
+void mt_sched_task_report(const mt_sched_t *s, uint32_t i, mt_task_report_t *r)
+{
+    const mt_task_state_t *e = &s->st[i];
+
+    r->name = s->tasks[i].name;
+    r->runs = e->runs;
+    r->min_us = e->min_us;
+    r->max_us = e->max_us;
+    r->mean_us = (e->runs == 0u) ? 0u : clamp_u32(e->total_us / e->runs);
+    r->overruns = e->overruns;
+    r->slips = e->slips;
+    r->not_achieved = e->not_achieved;
+    r->budget_skips = e->budget_skips;
+    r->pending = (s->tick - e->last_run) / e->interval;
+    r->interval = e->interval;
+}
+
+void mt_sched_loop_report(const mt_sched_t *s, mt_loop_report_t *r)
+{
+    r->ticks = s->tick;
+    r->loops = s->loops;
+    r->min_us = s->loop_min_us;
+    r->max_us = s->loop_max_us;
+    r->mean_us = (s->loops == 0u) ? 0u : clamp_u32(s->loop_total_us / s->loops);
+    r->long_loops = s->long_loops;
+    r->extra_us = s->extra_us;
+    r->filtered_us = s->filtered_loop_q8 / 256u;
+    r->load_permille = mt_sched_load_permille(s);
+}
+
+void mt_sched_reset_stats(mt_sched_t *s)
+{
+    uint32_t i;
+
+    /*@ loop invariant 0 <= i <= MT_CFG_SCHED_MAX_TASKS;
+        loop invariant \forall integer j; 0 <= j < i ==> s->st[j].runs == 0 && s->st[j].slips == 0;
+        loop assigns i, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].runs, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].min_us,
+                     s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].max_us, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].total_us,
+                     s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].overruns, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].slips,
+                     s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].not_achieved,
+                     s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].budget_skips;
+        loop variant MT_CFG_SCHED_MAX_TASKS - i;
+    */
+    for (i = 0u; i < MT_CFG_SCHED_MAX_TASKS; i++) {
+        s->st[i].runs = 0u;
+        s->st[i].min_us = 0u;
+        s->st[i].max_us = 0u;
+        s->st[i].total_us = 0u;
+        s->st[i].overruns = 0u;
+        s->st[i].slips = 0u;
+        s->st[i].not_achieved = 0u;
+        s->st[i].budget_skips = 0u;
+    }
+    s->loops = 0u;
+    s->loop_total_us = 0u;
+    s->loop_min_us = 0u;
+    s->loop_max_us = 0u;
+    s->long_loops = 0u;
+}

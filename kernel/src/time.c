@@ -1,0 +1,46 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file time.c
+ * @brief Hardware-counter extension and tick conversion (see mt/time.h).
+ */
+#include "mt/time.h"
+
+mt_status_t mt_time_ext_init(mt_time_ext_t *t, uint32_t hw_max, uint32_t hw_now)
+{
+    t->ticks = 0u;
+    t->last_hw = 0u;
+    t->hw_max = 1u;
+    if ((hw_max < 1u) || (hw_now > hw_max)) {
+        return MT_E_INVALID;
+    }
+    t->last_hw = hw_now;
+    t->hw_max = hw_max;
+    return MT_OK;
+}
+
+uint64_t mt_time_extend(mt_time_ext_t *t, uint32_t hw_now)
+{
+    uint64_t delta;
+
+    /* The one wrap-around in Metronome: a reading below the last one means the
+     * counter passed hw_max once; computed in 64 bits without any C wrap. */
+    if (hw_now >= t->last_hw) {
+        delta = (uint64_t)hw_now - (uint64_t)t->last_hw;
+    } else {
+        delta = (((uint64_t)t->hw_max - (uint64_t)t->last_hw) + (uint64_t)hw_now) + 1u;
+    }
+    t->ticks = (t->ticks <= (UINT64_MAX - delta)) ? (t->ticks + delta) : UINT64_MAX;
+    t->last_hw = hw_now;
+    return t->ticks;
+}
+
+uint64_t mt_time_ticks_to_us(uint64_t ticks, uint32_t hz)
+{
+    uint64_t whole = ticks / hz;
+    uint64_t part = ((ticks % hz) * 1000000u) / hz; /* < 1e6, no overflow: (hz-1)*1e6 < 2^63 */
+
+    if (whole > ((UINT64_MAX - part) / 1000000u)) {
+        return UINT64_MAX;
+    }
+    return (whole * 1000000u) + part;
+}
