@@ -19,7 +19,8 @@
 
 /* ---- time ------------------------------------------------------------- */
 
-static pthread_mutex_t g_sim_mu = PTHREAD_MUTEX_INITIALIZER;
+/* Simulated time: the flag and the clock are read without a lock (atomic
+ * loads), so mt_port_now_us costs one clock_gettime in real-time mode. */
 static int g_sim_on;
 static uint64_t g_sim_now;
 
@@ -32,73 +33,54 @@ static uint64_t real_now_us(void)
 
 void mt_posix_sim_enable(uint64_t start_us)
 {
-    pthread_mutex_lock(&g_sim_mu);
-    g_sim_on = 1;
-    g_sim_now = start_us;
-    pthread_mutex_unlock(&g_sim_mu);
+    __atomic_store_n(&g_sim_now, start_us, __ATOMIC_RELEASE);
+    __atomic_store_n(&g_sim_on, 1, __ATOMIC_RELEASE);
 }
 
 void mt_posix_sim_disable(void)
 {
-    pthread_mutex_lock(&g_sim_mu);
-    g_sim_on = 0;
-    pthread_mutex_unlock(&g_sim_mu);
+    __atomic_store_n(&g_sim_on, 0, __ATOMIC_RELEASE);
 }
 
 bool mt_posix_sim_active(void)
 {
-    int on;
-    pthread_mutex_lock(&g_sim_mu);
-    on = g_sim_on;
-    pthread_mutex_unlock(&g_sim_mu);
-    return on != 0;
+    return __atomic_load_n(&g_sim_on, __ATOMIC_ACQUIRE) != 0;
 }
 
 void mt_posix_sim_advance(uint64_t us)
 {
-    pthread_mutex_lock(&g_sim_mu);
-    g_sim_now = (g_sim_now <= UINT64_MAX - us) ? g_sim_now + us : UINT64_MAX;
-    pthread_mutex_unlock(&g_sim_mu);
+    uint64_t t = __atomic_load_n(&g_sim_now, __ATOMIC_ACQUIRE);
+    uint64_t n;
+    do {
+        n = (t <= UINT64_MAX - us) ? t + us : UINT64_MAX;
+    } while (!__atomic_compare_exchange_n(&g_sim_now, &t, n, false, __ATOMIC_ACQ_REL,
+                                          __ATOMIC_ACQUIRE));
 }
 
-static void sim_set_at_least(uint64_t t)
+static void sim_set_at_least(uint64_t target)
 {
-    pthread_mutex_lock(&g_sim_mu);
-    if (g_sim_now < t) {
-        g_sim_now = t;
+    uint64_t t = __atomic_load_n(&g_sim_now, __ATOMIC_ACQUIRE);
+    while ((t < target) && !__atomic_compare_exchange_n(&g_sim_now, &t, target, false,
+                                                        __ATOMIC_ACQ_REL, __ATOMIC_ACQUIRE)) {
     }
-    pthread_mutex_unlock(&g_sim_mu);
 }
 
 uint64_t mt_port_now_us(void)
 {
-    uint64_t t;
-    int on;
-    pthread_mutex_lock(&g_sim_mu);
-    on = g_sim_on;
-    t = g_sim_now;
-    pthread_mutex_unlock(&g_sim_mu);
-    return (on != 0) ? t : real_now_us();
+    if (__atomic_load_n(&g_sim_on, __ATOMIC_ACQUIRE) != 0) {
+        return __atomic_load_n(&g_sim_now, __ATOMIC_ACQUIRE);
+    }
+    return real_now_us();
 }
 
 /* ---- kernel lock ---------------------------------------------------------- */
 
-static pthread_mutex_t g_kernel_mu;
-static pthread_once_t g_kernel_once = PTHREAD_ONCE_INIT;
-
-static void kernel_mu_init(void)
-{
-    pthread_mutexattr_t a;
-    pthread_mutexattr_init(&a);
-    /* error-checking: a nested lock is a contract violation we want to see */
-    pthread_mutexattr_settype(&a, PTHREAD_MUTEX_ERRORCHECK);
-    pthread_mutex_init(&g_kernel_mu, &a);
-    pthread_mutexattr_destroy(&a);
-}
+/* Error-checking, statically initialised: a nested lock or an unlock by a
+ * thread that does not hold it is a contract violation and halts. */
+static pthread_mutex_t g_kernel_mu = PTHREAD_ERRORCHECK_MUTEX_INITIALIZER_NP;
 
 void mt_port_lock(void)
 {
-    pthread_once(&g_kernel_once, kernel_mu_init);
     if (pthread_mutex_lock(&g_kernel_mu) != 0) {
         mt_port_halt("mt_port_lock: kernel lock already held by this thread");
     }
@@ -348,9 +330,10 @@ uint64_t mt_posix_metronome_wait(void *metronome)
     } else {
         /* absolute deadlines: no drift; a late loop skips to the next boundary */
         m->next_us += m->period_us;
-        if (m->next_us <= now) {
-            uint64_t behind = (now - m->next_us) / m->period_us;
-            m->next_us += (behind + 1u) * m->period_us;
+        if (m->next_us < now) {
+            /* late: skip to the first period boundary at or after now */
+            uint64_t behind = ((now - m->next_us) + m->period_us - 1u) / m->period_us;
+            m->next_us += behind * m->period_us;
         }
     }
     if (mt_posix_sim_active()) {

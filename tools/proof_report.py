@@ -1,0 +1,226 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""Merge the results of `make prove` into one report.
+
+Inputs (each written by its own gate; a missing one is reported as "not run"):
+  build/proof/wp/summary.json      Frama-C WP (proofs/wp/gate.py)
+  build/proof/cbmc/summary.json    CBMC harnesses (proofs/cbmc)
+  build/proof/tla/summary.json     TLC models (tla/run_tlc.py)
+  build/proof/selftest/summary.json  mutation check (tools/prove_selftest.py), optional
+  build/proof/versions.txt         tool versions printed at the start of the run
+  build/proof/timing.json          wall time per part (written by the Makefile)
+  proofs/assumptions.json          every assumption the proofs rely on, with its reason
+  proofs/baseline.json             committed counts; the report fails if any count goes down
+
+Outputs:
+  build/proof/summary.json   {"wp": {...}, "cbmc": {...}, "tla": {...}, "assumptions": [...], ...}
+  build/proof/junit.xml      one testsuite per tool, one testcase per module/harness/model
+  build/proof/report.md      readable report for auditors: results and assumptions
+
+Exit status 1 when a part failed, a part that must run is missing, or a count is below the
+baseline.
+"""
+import json
+import os
+import sys
+import xml.sax.saxutils as sx
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+BUILD = os.environ.get("BUILD", "build")
+OUT = os.path.join(ROOT, BUILD, "proof")
+
+
+def load(path):
+    full = os.path.join(ROOT, path)
+    if not os.path.exists(full):
+        return None
+    with open(full, encoding="utf-8") as f:
+        return json.load(f)
+
+
+def wp_rows(wp):
+    """(module, function, proved, total, smoke_ok, smoke, seconds) from the WP summary."""
+    rows = []
+    for mod, m in sorted((wp or {}).get("modules", {}).items()):
+        funcs = m.get("functions") or {}
+        if not funcs:
+            rows.append((mod, "*", m.get("proved", 0), m.get("goals", 0),
+                         m.get("smoke_passed", 0), m.get("smoke", 0), m.get("seconds", 0.0)))
+        for fn, f in sorted(funcs.items()):
+            rows.append((mod, fn, f.get("proved", 0), f.get("goals", 0),
+                         f.get("smoke_passed", 0), f.get("smoke", 0), f.get("seconds", 0.0)))
+    return rows
+
+
+def cbmc_by_function(cbmc):
+    res = {}
+    for r in (cbmc or {}).get("results", []):
+        res[r.get("function")] = r
+    return res
+
+
+def main():
+    wp = load(f"{BUILD}/proof/wp/summary.json")
+    cbmc = load(f"{BUILD}/proof/cbmc/summary.json")
+    tla = load(f"{BUILD}/proof/tla/summary.json")
+    selftest = load(f"{BUILD}/proof/selftest/summary.json")
+    timing = load(f"{BUILD}/proof/timing.json") or {}
+    assumptions = load("proofs/assumptions.json") or []
+    baseline = load("proofs/baseline.json") or {}
+    versions = ""
+    vpath = os.path.join(OUT, "versions.txt")
+    if os.path.exists(vpath):
+        with open(vpath, encoding="utf-8") as f:
+            versions = f.read().strip()
+
+    problems = []
+    summary = {
+        "wp": None, "cbmc": None, "tla": None, "selftest": None,
+        "assumptions": assumptions, "timing": timing, "versions": versions.splitlines(),
+    }
+
+    if wp is None:
+        problems.append("WP summary missing (make wp did not run)")
+    else:
+        summary["wp"] = {
+            "goals": wp.get("goals", 0), "proved": wp.get("proved", 0),
+            "smoke": wp.get("smoke", 0), "smoke_passed": wp.get("smoke_passed", 0),
+            "by_prover": wp.get("by_prover", {}), "modules": sorted(wp.get("modules", {})),
+        }
+        if wp.get("proved", 0) != wp.get("goals", 0) or wp.get("goals", 0) == 0:
+            problems.append(f"WP: {wp.get('proved', 0)}/{wp.get('goals', 0)} goals proved")
+        if wp.get("smoke_passed", 0) != wp.get("smoke", 0):
+            problems.append(f"WP: {wp.get('smoke_passed', 0)}/{wp.get('smoke', 0)} smoke tests passed")
+    if cbmc is None:
+        problems.append("CBMC summary missing (make cbmc did not run)")
+    else:
+        summary["cbmc"] = {
+            "harnesses": cbmc.get("harnesses", 0), "passed": cbmc.get("passed", 0),
+            "min_coverage": min([r.get("coverage", 0.0) for r in cbmc.get("results", [])] or [0.0]),
+        }
+        if cbmc.get("passed", 0) != cbmc.get("harnesses", 0) or cbmc.get("harnesses", 0) == 0:
+            problems.append(f"CBMC: {cbmc.get('passed', 0)}/{cbmc.get('harnesses', 0)} harnesses passed")
+    if tla is None:
+        problems.append("TLA+ summary missing (make tla did not run)")
+    else:
+        summary["tla"] = {"models": tla.get("total", 0), "passed": tla.get("passed", 0)}
+        if tla.get("passed", 0) != tla.get("total", 0) or tla.get("total", 0) == 0:
+            problems.append(f"TLA+: {tla.get('passed', 0)}/{tla.get('total', 0)} configurations as expected")
+    if selftest is not None:
+        summary["selftest"] = {"mutants": selftest.get("mutants", 0), "killed": selftest.get("killed", 0)}
+        if selftest.get("killed", 0) != selftest.get("mutants", 0):
+            problems.append(f"mutation check: {selftest.get('killed', 0)}/{selftest.get('mutants', 0)} killed")
+
+    # Baseline: no count may go down.
+    counts = {
+        "wp.proved": (summary["wp"] or {}).get("proved", 0),
+        "wp.smoke_passed": (summary["wp"] or {}).get("smoke_passed", 0),
+        "cbmc.passed": (summary["cbmc"] or {}).get("passed", 0),
+        "tla.passed": (summary["tla"] or {}).get("passed", 0),
+    }
+    if summary["selftest"] is not None:
+        counts["selftest.killed"] = summary["selftest"]["killed"]
+    for key, base in sorted(baseline.items()):
+        if key in counts and counts[key] < base:
+            problems.append(f"baseline: {key} = {counts[key]} < {base} (proofs/baseline.json)")
+    summary["counts"] = counts
+    summary["problems"] = problems
+    summary["ok"] = not problems
+
+    os.makedirs(OUT, exist_ok=True)
+    with open(os.path.join(OUT, "summary.json"), "w", encoding="utf-8") as f:
+        json.dump(summary, f, indent=2, sort_keys=True)
+        f.write("\n")
+
+    cb = cbmc_by_function(cbmc)
+    rows = wp_rows(wp)
+
+    # JUnit
+    def case(suite, name, ok, msg, secs):
+        s = f'    <testcase classname="{sx.escape(suite)}" name="{sx.escape(name)}" time="{secs:.2f}">'
+        if not ok:
+            s += f'<failure message="{sx.quoteattr(msg)[1:-1]}"/>'
+        return s + "</testcase>"
+
+    suites = []
+    wp_cases = [case("wp." + m, fn, p == t and so == s_, f"{p}/{t} goals, {so}/{s_} smoke", sec)
+                for (m, fn, p, t, so, s_, sec) in rows]
+    cb_cases = [case("cbmc", r.get("function", "?"), r.get("failed", 1) == 0,
+                     f"{r.get('failed')} failed, coverage {r.get('coverage')}%", r.get("seconds", 0.0))
+                for r in (cbmc or {}).get("results", [])]
+    tl_cases = [case("tla", m.get("name", "?"), m.get("ok", False), m.get("detail", ""),
+                     float(m.get("seconds", 0.0))) for m in (tla or {}).get("models", [])]
+    for name, cases in (("wp", wp_cases), ("cbmc", cb_cases), ("tla", tl_cases)):
+        fails = sum(1 for c in cases if "<failure" in c)
+        suites.append(f'  <testsuite name="{name}" tests="{len(cases)}" failures="{fails}">\n'
+                      + "\n".join(cases) + "\n  </testsuite>")
+    with open(os.path.join(OUT, "junit.xml"), "w", encoding="utf-8") as f:
+        f.write('<?xml version="1.0" encoding="UTF-8"?>\n<testsuites>\n' + "\n".join(suites) + "\n</testsuites>\n")
+
+    # Console table + Markdown report
+    lines = []
+    lines.append("| module | function | contract | WP goals | smoke | CBMC | coverage | time (s) |")
+    lines.append("|---|---|---|---|---|---|---|---|")
+    for (m, fn, p, t, so, s_, sec) in rows:
+        r = cb.get(fn)
+        cres = "-" if r is None else ("pass" if r.get("failed", 1) == 0 else f"FAIL ({r.get('failed')})")
+        cov = "-" if r is None else f"{r.get('coverage', 0):.0f}%"
+        secs = sec + (0.0 if r is None else float(r.get("seconds", 0.0)))
+        lines.append(f"| {m} | {fn} | yes | {p}/{t} | {so}/{s_} | {cres} | {cov} | {secs:.1f} |")
+    table = "\n".join(lines)
+
+    md = ["# Metronome proof report", ""]
+    md.append("Result: **" + ("all checks passed" if not problems else "FAILED") + "**")
+    md.append("")
+    for p in problems:
+        md.append(f"- {p}")
+    if versions:
+        md += ["", "## Tools", "", "```", versions, "```"]
+    md += ["", "## Totals", ""]
+    if summary["wp"]:
+        w = summary["wp"]
+        md.append(f"- Frama-C WP (RTE, unsigned overflow/downcast, smoke tests): {w['proved']}/{w['goals']} goals, "
+                  f"{w['smoke_passed']}/{w['smoke']} smoke tests; by prover: {json.dumps(w['by_prover'], sort_keys=True)}")
+    if summary["cbmc"]:
+        c = summary["cbmc"]
+        md.append(f"- CBMC: {c['passed']}/{c['harnesses']} harnesses, lowest coverage {c['min_coverage']:.0f}%")
+    if summary["tla"]:
+        t = summary["tla"]
+        md.append(f"- TLC: {t['passed']}/{t['models']} model configurations as expected")
+    if summary["selftest"]:
+        s = summary["selftest"]
+        md.append(f"- Mutation check: {s['killed']}/{s['mutants']} seeded bugs rejected")
+    if timing:
+        md.append("- Wall time: " + ", ".join(f"{k} {v:.0f} s" for k, v in sorted(timing.items())))
+    md += ["", "## Per function", "", table, ""]
+    if tla:
+        md += ["## TLA+ models", "", "| model | config | expected | result | distinct states | time (s) |",
+               "|---|---|---|---|---|---|"]
+        for m in tla.get("models", []):
+            md.append(f"| {m.get('model', m.get('name'))} | {m.get('config', '')} | {m.get('expected', '')} | "
+                      f"{'as expected' if m.get('ok') else 'UNEXPECTED'} | {m.get('distinct', '')} | {m.get('seconds', '')} |")
+        md.append("")
+    md += ["## Assumptions", "",
+           "Every fact the proofs take without proving it. Each is a reviewable trust point.", "",
+           "| id | tool | assumption | reason |", "|---|---|---|---|"]
+    for a in assumptions:
+        md.append(f"| {a.get('id')} | {a.get('tool')} | {a.get('what')} | {a.get('why')} |")
+    with open(os.path.join(OUT, "report.md"), "w", encoding="utf-8") as f:
+        f.write("\n".join(md) + "\n")
+
+    print(table)
+    print()
+    for k, v in sorted(counts.items()):
+        print(f"{k:18s} {v}")
+    print(f"report: {BUILD}/proof/report.md, {BUILD}/proof/summary.json, {BUILD}/proof/junit.xml")
+    if problems:
+        print("PROVE FAILED:")
+        for p in problems:
+            print("  - " + p)
+        return 1
+    print("PROVE OK")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""`make prove-selftest`: seeded bugs must be rejected by WP or CBMC.
+
+Each mutant in proofs/mutants.json names a file, an exact text to find (it must occur
+exactly once) and its replacement, the kernel function it breaks and the WP module and CBMC
+harness that cover it. For each mutant the repository is copied to
+build/selftest/<id>/ (sources only; the tool folder is linked), the mutation is applied, and
+  - WP runs on that module restricted to that function (`make wp-<module> WP_FCT=<function>`),
+    killed when any goal or smoke test is not proved;
+  - CBMC runs that function's harness (`make cbmc-<function>`), killed when it fails.
+A mutant survives only if both tools accept it. The script writes
+build/selftest/summary.json and build/proof/selftest/summary.json and exits 1 if a mutant
+survives or if a mutation does not apply (the list must follow the code).
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+BUILD = os.environ.get("BUILD", "build")
+SKIP = {".git", "build", ".tools", ".cache"}
+
+
+def copy_tree(dst):
+    if os.path.exists(dst):
+        shutil.rmtree(dst)
+    os.makedirs(dst)
+    for name in os.listdir(ROOT):
+        if name in SKIP:
+            continue
+        src = os.path.join(ROOT, name)
+        if os.path.isdir(src):
+            shutil.copytree(src, os.path.join(dst, name), symlinks=True)
+        else:
+            shutil.copy2(src, os.path.join(dst, name))
+    tools = os.path.join(ROOT, ".tools")
+    if os.path.isdir(tools):
+        os.symlink(tools, os.path.join(dst, ".tools"))
+
+
+def run(cmd, cwd, log):
+    with open(log, "w", encoding="utf-8") as f:
+        p = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
+    return p.returncode
+
+
+def main():
+    only = set(sys.argv[1:])
+    with open(os.path.join(ROOT, "proofs", "mutants.json"), encoding="utf-8") as f:
+        mutants = json.load(f)
+    results = []
+    killed = 0
+    t_all = time.time()
+    for m in mutants:
+        if only and m["id"] not in only:
+            continue
+        t0 = time.time()
+        work = os.path.join(ROOT, BUILD, "selftest", m["id"])
+        copy_tree(work)
+        path = os.path.join(work, m["file"])
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        n = text.count(m["find"])
+        if n != 1:
+            print(f"{m['id']}: mutation does not apply ({n} matches of the find text in {m['file']})")
+            results.append({"id": m["id"], "applied": False, "killed": False})
+            continue
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text.replace(m["find"], m["replace"]))
+        wp_rc = run(["make", "--no-print-directory", f"wp-{m['wp_module']}", f"WP_FCT={m['function']}",
+                     "WP_GATE=1", "WP_CACHE=none"], work, os.path.join(work, "wp.log"))
+        wp_kill = wp_rc != 0
+        cb_rc = run(["make", "--no-print-directory", f"cbmc-{m.get('harness', m['function'])}"], work,
+                    os.path.join(work, "cbmc.log"))
+        cb_kill = cb_rc != 0
+        k = wp_kill or cb_kill
+        killed += 1 if k else 0
+        secs = time.time() - t0
+        results.append({"id": m["id"], "applied": True, "description": m["description"],
+                        "function": m["function"], "wp": wp_kill, "cbmc": cb_kill, "killed": k,
+                        "seconds": round(secs, 1)})
+        print(f"{m['id']:4s} {m['function']:28s} WP {'killed' if wp_kill else 'accepted':8s} "
+              f"CBMC {'killed' if cb_kill else 'accepted':8s} {secs:6.1f} s  {m['description']}")
+    total = len(results)
+    by_wp = sum(1 for r in results if r.get("wp"))
+    by_cb = sum(1 for r in results if r.get("cbmc"))
+    summary = {"mutants": total, "killed": killed, "killed_by_wp": by_wp, "killed_by_cbmc": by_cb,
+               "seconds": round(time.time() - t_all, 1), "results": results}
+    for d in (os.path.join(ROOT, BUILD, "selftest"), os.path.join(ROOT, BUILD, "proof", "selftest")):
+        os.makedirs(d, exist_ok=True)
+        with open(os.path.join(d, "summary.json"), "w", encoding="utf-8") as f:
+            json.dump(summary, f, indent=2)
+            f.write("\n")
+    rate = (100.0 * killed / total) if total else 0.0
+    print(f"kill rate: {killed}/{total} ({rate:.0f}%); WP alone {by_wp}/{total}, CBMC alone {by_cb}/{total}")
+    ok = total > 0 and killed == total and all(r["applied"] for r in results)
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
