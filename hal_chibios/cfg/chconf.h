@@ -16,9 +16,14 @@
 /* ---- System timer: periodic 1 kHz tick (tickless did not wake sleepers
  *      under QEMU 7.2). ------------------------------------------------- */
 #define CH_CFG_SMP_MODE                     FALSE
+/* Counter width: 32 bits; the wrap test builds 16 (-D both options). */
+#if !defined(CH_CFG_ST_RESOLUTION)
 #define CH_CFG_ST_RESOLUTION                32
+#endif
 #define CH_CFG_ST_FREQUENCY                 1000
+#if !defined(CH_CFG_INTERVALS_SIZE)
 #define CH_CFG_INTERVALS_SIZE               32
+#endif
 #define CH_CFG_TIME_TYPES_SIZE              32
 #define CH_CFG_ST_TIMEDELTA                 0
 

@@ -3,20 +3,25 @@
 # Metronome - ChibiOS firmware build.
 #
 #   make -f hal_chibios/mk/firmware.mk CHIBIOS=/path/to/ChibiOS \
-#        [BOARD=qemu-mps2-an386|stm32f407-discovery] [APP=hello] [FAIL=1] \
-#        [all|run|clean]
+#        [BOARD=qemu-mps2-an386|stm32f407-discovery] [APP=smoke|hello|port_smoke] [FAIL=1|2] \
+#        [BUILD=build] [VARIANT=name] [EXTRA_DEFS=...] [all|run|clean]
 #
 # Builds $(APP) for $(BOARD) against an external ChibiOS tree (nothing of
 # ChibiOS lives in this repository), using ChibiOS's own makefile fragments.
-# Output: build/fw/$(BOARD)/$(APP)[-fail]/$(APP).elf at the repository root.
-# Without CHIBIOS the build is skipped with a message and success status.
+# Output: $(BUILD)/fw/$(BOARD)/$(VARIANT)/$(APP).elf, BUILD relative to the
+# repository root unless absolute; VARIANT defaults to $(APP), $(APP)-fail
+# (FAIL=1) or $(APP)-failN (FAIL=N). FAIL=N defines FW_FAIL=N: the app's
+# seeded failure N (every app has 1). Without CHIBIOS the build is skipped
+# with a message and success status.
 
 HALDIR  := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))/..)
 ROOTDIR := $(abspath $(HALDIR)/..)
 
 BOARD ?= qemu-mps2-an386
-APP   ?= hello
+APP   ?= smoke
 FAIL  ?=
+BUILD ?= build
+FW_OUT := $(if $(filter /%,$(BUILD)),$(BUILD),$(ROOTDIR)/$(BUILD))/fw
 
 BOARDDIR := $(HALDIR)/boards/$(BOARD)
 APPDIR   ?= $(HALDIR)/apps/$(APP)
@@ -25,9 +30,9 @@ ifeq ($(strip $(CHIBIOS)),)
 
 .PHONY: all run clean
 all run:
-	@echo "SKIP: CHIBIOS is not set (make ... CHIBIOS=/path/to/ChibiOS); ChibiOS firmware not built"
+	@echo "skipped: CHIBIOS not set (give CHIBIOS=/path/to/ChibiOS, tested with ver21.11.5)"
 clean:
-	@rm -rf $(ROOTDIR)/build/fw
+	@rm -rf $(FW_OUT)
 
 else
 
@@ -57,9 +62,9 @@ USE_EXCEPTIONS_STACKSIZE ?= 0x400
 # Project, sources, paths.
 
 # Build-folder name; give a distinct VARIANT when changing EXTRA_DEFS.
-VARIANT  ?= $(APP)$(if $(FAIL),-fail)
+VARIANT  ?= $(APP)$(if $(FAIL),-fail$(filter-out 1,$(FAIL)))
 PROJECT  := $(APP)
-BUILDDIR := $(ROOTDIR)/build/fw/$(BOARD)/$(VARIANT)
+BUILDDIR := $(FW_OUT)/$(BOARD)/$(VARIANT)
 DEPDIR   := $(BUILDDIR)/.dep
 
 # Configuration: RT (chconf.h) is shared; HAL configuration, when a board
@@ -73,10 +78,13 @@ include $(CHIBIOS)/os/license/license.mk
 include $(BOARDDIR)/board.mk
 
 # Optional per-app fragment: may set APP_EXTRA_CSRC, APP_EXTRA_INC,
-# APP_EXTRA_DEFS (e.g. to pull in the kernel and the port).
-APP_EXTRA_CSRC :=
-APP_EXTRA_INC  :=
-APP_EXTRA_DEFS :=
+# APP_EXTRA_DEFS (e.g. to pull in the kernel and the port, see
+# mk/kernel.mk) and APP_STRICT_CSRC (sources without ChibiOS headers, built
+# with the kernel's strict warnings too).
+APP_EXTRA_CSRC  :=
+APP_EXTRA_INC   :=
+APP_EXTRA_DEFS  :=
+APP_STRICT_CSRC :=
 -include $(APPDIR)/app.mk
 
 # Our own C sources: compiled with -Werror on top of CWARN.
@@ -99,7 +107,7 @@ CPPWARN = -Wall -Wextra -Wundef
 
 # -D options go to C (UDEFS) and to preprocessed assembler (UADEFS) alike:
 # chconf.h is read by both, a mismatch breaks the link.
-FW_DEFS := $(if $(FAIL),-DFW_FAIL=1) $(APP_EXTRA_DEFS) $(EXTRA_DEFS)
+FW_DEFS := $(if $(FAIL),-DFW_FAIL=$(FAIL)) $(APP_EXTRA_DEFS) $(EXTRA_DEFS)
 UDEFS   += $(FW_DEFS)
 UADEFS  += $(FW_DEFS)
 UINCDIR +=
@@ -112,6 +120,12 @@ include $(RULESPATH)/rules.mk
 
 OWN_OBJS := $(addprefix $(BUILDDIR)/obj/, $(notdir $(OWN_CSRC:.c=.o)))
 $(OWN_OBJS): CWARN += -Werror
+# The kernel's warning set (top-level Makefile) for sources that include no
+# ChibiOS header (ChibiOS's inline functions would not pass -Wconversion).
+STRICT_WARN := -Wpedantic -Wconversion -Wsign-conversion -Wshadow \
+               -Wmissing-prototypes -Wcast-align -Wformat=2
+STRICT_OBJS := $(addprefix $(BUILDDIR)/obj/, $(notdir $(APP_STRICT_CSRC:.c=.o)))
+$(STRICT_OBJS): CWARN += $(STRICT_WARN)
 
 # Size report after every build. The ChibiOS linker rules hand all RAM left
 # over to a NOLOAD .heap section (core allocator), which "size" counts as
@@ -137,7 +151,7 @@ QEMU_FLAGS = -M $(QEMU_MACHINE) -display none -monitor none -serial stdio \
 .PHONY: run
 run: all
 ifeq ($(QEMU_MACHINE),)
-	@echo "SKIP: board $(BOARD) has no QEMU machine"
+	@echo "skipped: board $(BOARD) has no QEMU machine"
 else
 	timeout $(QEMU_TIMEOUT) $(QEMU) $(QEMU_FLAGS) -kernel $(BUILDDIR)/$(PROJECT).elf
 endif

@@ -3,22 +3,29 @@
 #
 # Metronome - ChibiOS firmware smoke test.
 #
-#   CHIBIOS=/path/to/ChibiOS hal_chibios/scripts/fw_smoke.sh
+#   CHIBIOS=/path/to/ChibiOS [BUILD=build] hal_chibios/scripts/fw_smoke.sh
 #
 # Builds the QEMU mps2-an386 apps (hello, hello FAIL=1, port_smoke, and
 # port_smoke with waits forced through the split path) and the STM32F407
-# Discovery hello (build only, no warnings allowed), runs each QEMU image
-# twice, and checks: exit status 0 and identical output for the passing
-# apps, non-zero exit for the FAIL variant. Without CHIBIOS it skips (exit 0).
+# Discovery hello and smoke (build only; no warnings allowed anywhere), runs
+# each QEMU image twice, and checks: exit status 0 and identical output for
+# the passing apps, non-zero exit for the FAIL variants. The kernel smoke
+# firmware (apps/smoke) has its own script, qemu_smoke.sh. Without CHIBIOS it
+# skips (exit 0).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-MK=(make --no-print-directory -C "$ROOT" -f hal_chibios/mk/firmware.mk)
-FW="$ROOT/build/fw"
+BUILD="${BUILD:-build}"
+case "$BUILD" in
+    /*) ;;
+    *) BUILD="$ROOT/$BUILD" ;;
+esac
+MK=(make --no-print-directory -C "$ROOT" -f hal_chibios/mk/firmware.mk -j"$(nproc 2>/dev/null || echo 2)" BUILD="$BUILD")
+FW="$BUILD/fw"
 QEMU_TIMEOUT="${QEMU_TIMEOUT:-60}"
 
 if [ -z "${CHIBIOS:-}" ]; then
-    echo "SKIP: CHIBIOS is not set; ChibiOS firmware smoke test not run"
+    echo "fw_smoke: skipped: CHIBIOS not set (give CHIBIOS=/path/to/ChibiOS, tested with ver21.11.5)"
     exit 0
 fi
 
@@ -81,6 +88,7 @@ build $B port_smoke port_smoke-chunk3 EXTRA_DEFS=-DMT_PORT_CHIBIOS_MAX_CHUNK=3 &
     expect_pass port_smoke-chunk3 port_smoke
 build $B port_smoke port_smoke-fail FAIL=1 && expect_fail port_smoke-fail port_smoke
 build stm32f407-discovery hello hello || true
+build stm32f407-discovery smoke smoke || true
 
 if [ "$fail" -ne 0 ]; then
     echo "fw_smoke: FAILED"

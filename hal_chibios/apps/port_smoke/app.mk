@@ -1,9 +1,8 @@
 # SPDX-License-Identifier: Apache-2.0
-# port_smoke: the kernel's semaphore and time modules on the ChibiOS port.
-APP_EXTRA_CSRC := $(ROOTDIR)/kernel/src/time.c \
-                  $(ROOTDIR)/kernel/src/sem.c \
-                  $(HALDIR)/port/mt_port_chibios.c
-APP_EXTRA_INC  := $(ROOTDIR)/kernel/include \
-                  $(ROOTDIR)/kernel/port \
-                  $(ROOTDIR)/kernel/spec \
-                  $(HALDIR)/port
+# port_smoke: the port contract (time, lock, suspend/resume, threads) through
+# the kernel's semaphore.
+include $(HALDIR)/mk/kernel.mk
+APP_EXTRA_CSRC  := $(MT_KERNEL_CSRC) $(MT_PORT_CSRC)
+APP_EXTRA_DEFS  := $(MT_DEFS)
+APP_EXTRA_INC   := $(MT_INC)
+APP_STRICT_CSRC := $(MT_STRICT_CSRC)

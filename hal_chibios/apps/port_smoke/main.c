@@ -3,8 +3,10 @@
  * Metronome - smoke test of the ChibiOS port (hal_chibios/port) through the
  * kernel's semaphore: time, lock, suspend/resume with and without timeout
  * (single RT interval and split waits), signal from an ISR, thread creation
- * and priorities. Prints "port ok ..." and exits 0, or halts with a reason
- * (exit 1). FAIL=1 ends with mt_port_halt() instead.
+ * and priorities, then the firmware services of mt_port_chibios.h: sleeps
+ * to absolute deadlines, the metronome, a proc thread stopped and restarted
+ * on the same stack, an ISR timer. Prints "port ok ..." and exits 0, or halts
+ * with a reason (exit 1). FAIL=1 ends with mt_port_halt() instead.
  * Build with EXTRA_DEFS=-DMT_PORT_CHIBIOS_MAX_CHUNK=3 to force every finite
  * wait through the split path.
  */
@@ -51,6 +53,76 @@ static void isr_signal_cb(virtual_timer_t *vtp, void *p) {
   mt_sem_signal_isr(&sem);    /* ISR context, lock not held */
 }
 
+static mt_proc_set_t procs;
+static mt_chibios_proc_thread_t proc_thread;
+static volatile uint32_t proc_calls;
+static volatile uint32_t isr_calls;
+
+static void count_proc(void *arg) {
+  (void)arg;
+  proc_calls++;
+}
+
+static void count_isr(void *arg) {
+  (void)arg;
+  isr_calls++;
+}
+
+/* Firmware services beyond the port contract. */
+static void services(void) {
+  mt_chibios_metronome_t m;
+  uint64_t t0;
+  uint64_t t1;
+  uint64_t prev;
+  uint32_t id;
+  uint32_t k;
+
+  /* Sleep to an absolute deadline: not early, wakes on the next tick edge. */
+  t0 = mt_port_now_us();
+  mt_chibios_sleep_until_us(t0 + 5000U);
+  t1 = mt_port_now_us();
+  check((t1 >= t0 + 5000U) && (t1 < t0 + 6100U), "sleep_until: wake time");
+  mt_chibios_sleep_until_us(t0);                  /* past deadline: at once */
+  check(mt_port_now_us() - t1 < 1000U, "sleep_until: past deadline");
+
+  /* Metronome: 500 Hz samples two ticks apart, none missed. */
+  check(mt_chibios_metronome_init(&m, 0U) == MT_E_INVALID, "metronome: rate 0");
+  check(mt_chibios_metronome_init(&m, 500U) == MT_OK, "metronome: init");
+  prev = mt_chibios_metronome_wait(&m);
+  for (k = 0U; k < 10U; k++) {
+    t0 = mt_chibios_metronome_wait(&m);
+    check(t0 == prev + 2000U, "metronome: period");
+    check(mt_port_now_us() >= t0, "metronome: early");
+    prev = t0;
+  }
+  check((m.samples == 11U) && (m.missed == 0U), "metronome: counts");
+
+  /* Proc thread at 1 kHz, stopped, then restarted on the same stack. */
+  mt_proc_set_init(&procs);
+  check(mt_proc_register(&procs, count_proc, NULL) == MT_OK, "proc: register");
+  for (k = 0U; k < 2U; k++) {
+    proc_calls = 0U;
+    check(mt_chibios_proc_thread_start(&proc_thread, "procs", &procs, 1000U,
+                                       worker_stack, sizeof(worker_stack),
+                                       MT_PRIO_TIMER) == MT_OK, "proc: start");
+    mt_chibios_sleep_until_us(mt_port_now_us() + 10000U);
+    check(mt_chibios_proc_thread_stop(&proc_thread, 5000U) == MT_OK, "proc: stop");
+    /* 10 ms of 1 kHz rounds, plus the edge the sleep ends on and the one
+       on which the thread sees the stop request. */
+    check((proc_calls >= 10U) && (proc_calls <= 12U), "proc: rate");
+    check(procs.periods_missed == 0U, "proc: missed periods");
+  }
+
+  /* ISR timer every 2 ms; nothing after the stop. */
+  check(mt_chibios_isr_timer_start(&id, 2000U, count_isr, NULL) == MT_OK, "isr timer: start");
+  mt_chibios_sleep_until_us(mt_port_now_us() + 20000U);
+  mt_chibios_isr_timer_stop(id);
+  k = isr_calls;
+  check((k >= 9U) && (k <= 10U), "isr timer: rate");
+  mt_chibios_sleep_until_us(mt_port_now_us() + 10000U);
+  check(isr_calls == k, "isr timer: called after stop");
+}
+
 static void wait_done(void) {
   while (waiter_done == 0U) {
     chThdSleepMilliseconds(1);
@@ -66,8 +138,7 @@ int main(void) {
   mt_status_t st;
 
   fw_board_init();
-  chSysInit();
-  mt_port_chibios_start();
+  mt_chibios_init();
 
   /* Time: monotonic, follows the tick. */
   t0 = mt_port_now_us();
@@ -148,6 +219,8 @@ int main(void) {
   check(mt_port_thread_create("bad", hi_fn, NULL, hi_stack, 64U,
                               MT_PRIO_IO, 0) == MT_E_INVALID,
         "create: tiny stack accepted");
+
+  services();
 
 #if defined(FW_FAIL)
   mt_port_halt("port_smoke: deliberate failure (FAIL=1)");
