@@ -1,0 +1,206 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""Run the TLA+ models listed in tla/models.json with TLC and check the results.
+
+Each manifest entry names a module, a config and the expected result: "pass"
+(no error; the distinct-state count must equal the pinned one), or the name of
+the invariant or temporal property a broken variant must violate, or
+"deadlock". A run fails on any other outcome, on a missing or different
+pinned count for a passing model, on a TLC error, or on a timeout.
+
+    tla/run_tlc.py                  CI configurations (deep == false)
+    tla/run_tlc.py --deep           the larger configurations (deep == true)
+    tla/run_tlc.py --only NAME ...  selected entries
+    tla/run_tlc.py --update         re-measure and rewrite the pinned counts,
+                                    depths and runtimes in the manifest
+
+Results go to <out>/summary.json (<out>/summary-deep.json for --deep) and one
+log per model in <out>/logs/. TLC runs on a copy of the module and config in
+<out>/work/<name>/, so nothing is written into tla/.
+"""
+import argparse
+import json
+import os
+import re
+import resource
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+MANIFEST = os.path.join(HERE, "models.json")
+
+RE_DISTINCT = re.compile(r"([\d,]+) states generated, ([\d,]+) distinct states found")
+RE_DEPTH = re.compile(r"The depth of the complete state graph search is (\d+)")
+RE_INV = re.compile(r"^Error: Invariant (\w+) is violated", re.M)
+RE_PROP = re.compile(r"^Error: Temporal properties were violated", re.M)
+RE_DEADLOCK = re.compile(r"^Error: Deadlock reached", re.M)
+RE_OK = re.compile(r"^Model checking completed\. No error has been found\.", re.M)
+RE_CFG_PROPS = re.compile(r"^\s*PROPERT(?:Y|IES)\s+(.*)$", re.M)
+
+
+def cfg_properties(cfg_text):
+    """Temporal property names listed in a TLC config (comments removed)."""
+    text = re.sub(r"\\\*.*", "", cfg_text)
+    text = re.sub(r"\(\*.*?\*\)", "", text, flags=re.S)
+    names = []
+    for line in RE_CFG_PROPS.findall(text):
+        names += line.split()
+    return names
+
+
+def classify(log, props):
+    """Outcome of one TLC run: 'pass', an invariant or property name,
+    'deadlock', or 'error: ...'."""
+    m = RE_INV.search(log)
+    if m:
+        return m.group(1)
+    if RE_PROP.search(log):
+        if len(props) == 1:
+            return props[0]
+        return "temporal:" + "|".join(props)
+    if RE_DEADLOCK.search(log):
+        return "deadlock"
+    if RE_OK.search(log):
+        return "pass"
+    tail = [l for l in log.strip().splitlines() if l.strip()][-3:]
+    return "error: " + " / ".join(tail)
+
+
+def counts(log):
+    distinct = generated = depth = None
+    found = RE_DISTINCT.findall(log)
+    if found:
+        generated = int(found[-1][0].replace(",", ""))
+        distinct = int(found[-1][1].replace(",", ""))
+    m = RE_DEPTH.findall(log)
+    if m:
+        depth = int(m[-1])
+    return distinct, generated, depth
+
+
+def run_one(entry, args):
+    name = entry["name"]
+    work = os.path.join(args.out, "work", name)
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    module = entry["module"]
+    shutil.copy(os.path.join(HERE, module + ".tla"), work)
+    cfg_src = os.path.join(HERE, entry["config"])
+    cfg = os.path.basename(cfg_src)
+    shutil.copy(cfg_src, os.path.join(work, cfg))
+    with open(cfg_src) as f:
+        props = cfg_properties(f.read())
+    cmd = ["java", "-XX:+UseParallelGC", "-Xmx" + args.heap, "-cp", args.jar, "tlc2.TLC",
+           "-workers", "auto", "-cleanup",
+           "-metadir", os.path.join(work, "states"), "-config", cfg, module + ".tla"]
+    timeout = entry.get("timeout_s", args.timeout)
+    t0 = time.monotonic()
+    ru0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    try:
+        p = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           universal_newlines=True, timeout=timeout)
+        log = p.stdout
+        outcome = classify(log, props)
+    except subprocess.TimeoutExpired as e:
+        log = e.stdout or ""
+        if isinstance(log, bytes):
+            log = log.decode(errors="replace")
+        outcome = "error: timeout after %d s" % timeout
+    seconds = round(time.monotonic() - t0, 1)
+    ru1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = round((ru1.ru_utime - ru0.ru_utime) + (ru1.ru_stime - ru0.ru_stime), 1)
+    os.makedirs(os.path.join(args.out, "logs"), exist_ok=True)
+    with open(os.path.join(args.out, "logs", name + ".log"), "w") as f:
+        f.write("$ " + " ".join(cmd) + "\n" + log)
+    shutil.rmtree(work, ignore_errors=True)
+    distinct, generated, depth = counts(log)
+    expect = entry["expect"]
+    res = {"name": name, "module": module, "config": entry["config"], "deep": entry["deep"],
+           "expect": expect, "result": outcome, "distinct_states": distinct,
+           "generated_states": generated, "depth": depth, "seconds": seconds,
+           "cpu_s": cpu}
+    problems = []
+    if outcome != expect:
+        problems.append("expected %s, got %s" % (expect, outcome))
+    elif expect == "pass" and not args.update:
+        pinned = entry.get("distinct_states")
+        if pinned is None:
+            problems.append("no pinned distinct-state count (run with --update)")
+        elif pinned != distinct:
+            problems.append("distinct states %s, manifest pins %s" % (distinct, pinned))
+        if entry.get("depth") is not None and depth != entry["depth"]:
+            res["note"] = "depth %s, manifest has %s" % (depth, entry["depth"])
+    res["ok"] = not problems
+    if problems:
+        res["problem"] = "; ".join(problems)
+    return res
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--deep", action="store_true", help="run the deep configurations")
+    ap.add_argument("--only", nargs="+", metavar="NAME", help="run these entries only")
+    ap.add_argument("--update", action="store_true", help="rewrite the pinned counts")
+    ap.add_argument("--jar", default=os.path.join(ROOT, ".tools", "tla", "tla2tools.jar"))
+    ap.add_argument("--out", default=os.path.join(ROOT, "build", "proof", "tla"))
+    ap.add_argument("--timeout", type=int, default=int(os.environ.get("TLA_TIMEOUT", "120")),
+                    help="per-model cap in seconds for CI entries (deep entries: 10x)")
+    ap.add_argument("--heap", default=os.environ.get("TLA_HEAP", "2g"))
+    args = ap.parse_args()
+    args.jar = os.path.abspath(args.jar)
+    args.out = os.path.abspath(args.out)
+    if not os.path.isfile(args.jar):
+        sys.exit("run_tlc: %s not found (tools/bootstrap.sh prove installs it)" % args.jar)
+    if args.deep:
+        args.timeout *= 10
+
+    with open(MANIFEST) as f:
+        manifest = json.load(f)
+    entries = manifest["models"]
+    if args.only:
+        unknown = set(args.only) - {e["name"] for e in entries}
+        if unknown:
+            sys.exit("run_tlc: unknown entries: " + ", ".join(sorted(unknown)))
+        selected = [e for e in entries if e["name"] in args.only]
+    else:
+        selected = [e for e in entries if e["deep"] == args.deep]
+
+    os.makedirs(args.out, exist_ok=True)
+    results = []
+    t_all = time.monotonic()
+    for e in selected:
+        r = run_one(e, args)
+        results.append(r)
+        count = "" if r["distinct_states"] is None else "%d states" % r["distinct_states"]
+        print("%-4s %-34s %-28s %14s %7.1f s %7.1f s cpu%s" % (
+            "ok" if r["ok"] else "FAIL", r["name"], r["result"][:28], count, r["seconds"],
+            r["cpu_s"],
+            "" if r["ok"] else "  " + r["problem"]), flush=True)
+        if args.update and r["ok"]:
+            if e["expect"] == "pass":
+                e["distinct_states"] = r["distinct_states"]
+                e["depth"] = r["depth"]
+            e["runtime_s"] = r["seconds"]
+            e["cpu_s"] = r["cpu_s"]
+
+    passed = sum(1 for r in results if r["ok"])
+    summary = {"models": results, "passed": passed, "total": len(results),
+               "seconds": round(time.monotonic() - t_all, 1)}
+    out = os.path.join(args.out, "summary-deep.json" if args.deep else "summary.json")
+    with open(out, "w") as f:
+        json.dump(summary, f, indent=2)
+        f.write("\n")
+    if args.update:
+        with open(MANIFEST, "w") as f:
+            json.dump(manifest, f, indent=2)
+            f.write("\n")
+    print("tla: %d/%d as expected in %.0f s (%s)" % (passed, len(results), summary["seconds"],
+                                                    os.path.relpath(out, os.getcwd())))
+    return 0 if passed == len(results) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
