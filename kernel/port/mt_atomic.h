@@ -43,7 +43,7 @@ static inline uint32_t mt_load_acquire_u32(const uint32_t *p)
     return __atomic_load_n(p, __ATOMIC_ACQUIRE);
 }
 
-static inline void mt_store_release_u32(uint32_t *p, uint32_t v)
+static inline void mt_store_release_u32(uint32_t *p, uint32_t v) // NOLINT(readability-non-const-parameter): D-101 the builtin writes *p
 {
     __atomic_store_n(p, v, __ATOMIC_RELEASE);
 }

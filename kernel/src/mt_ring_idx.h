@@ -22,6 +22,7 @@
 */
 static inline uint32_t mt_idx_count(uint32_t w, uint32_t r, uint32_t s)
 {
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return (w >= r) ? (w - r) : ((w + (2u * s)) - r);
 }
 
@@ -50,5 +51,21 @@ static inline uint32_t mt_idx_slot(uint32_t i, uint32_t s)
 {
     return (i < s) ? i : (i - s);
 }
+
+/* Lemma (ghost function, proved by WP, called only from annotations): the k-th
+ * index after i lies k slots after i's slot while that stays below s, and at
+ * slot k - (s - slot(i)) after the wrap. A ghost call scopes the fact to the
+ * goals that need it, instead of a global lemma in every goal's context. */
+/*@ ghost
+  /@ requires 1 <= s <= MT_RING_SLOTS_MAX;
+     requires MtIdxOk(i, s);
+     assigns \nothing;
+     ensures lo: \forall integer k; 0 <= k < s - MtIdxSlot(i, s) ==>
+         MtIdxSlot(MtIdxAdd(i, k, s), s) == MtIdxSlot(i, s) + k;
+     ensures hi: \forall integer k; s - MtIdxSlot(i, s) <= k < s ==>
+         MtIdxSlot(MtIdxAdd(i, k, s), s) == k - (s - MtIdxSlot(i, s));
+  @/
+  static void mt_idx_slot_add_lemma(uint32_t i, uint32_t s) { }
+*/
 
 #endif /* MT_RING_IDX_H */

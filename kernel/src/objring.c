@@ -8,6 +8,21 @@
 #include "mt_atomic.h"
 #include "mt_ring_idx.h"
 
+/* Lemma (ghost function, proved by WP): the invariant from its parts. Lets the
+ * solvers prove MtORingInv once, in a small context, while each part is
+ * discharged at the call site (by Qed, after a chain of field stores). */
+/*@ ghost
+  /@ requires \valid(r) && 1 <= r->cap && r->slots == r->cap + 1 && 1 <= r->elem;
+     requires r->slots * r->elem <= MT_ORING_BYTES_MAX;
+     requires \valid(r->buf + (0 .. r->slots * r->elem - 1));
+     requires \separated(r, r->buf + (0 .. r->slots * r->elem - 1));
+     requires r->head == 0 && r->tail == 0 && r->head_cache == 0 && r->tail_cache == 0;
+     assigns \nothing;
+     ensures MtORingInv(r);
+  @/
+  static void oring_inv_intro(mt_oring_t *r) { }
+*/
+
 mt_status_t mt_oring_init(mt_oring_t *r, void *storage, uint32_t elem, uint32_t cap)
 {
     r->tail = 0u;
@@ -20,6 +35,8 @@ mt_status_t mt_oring_init(mt_oring_t *r, void *storage, uint32_t elem, uint32_t 
     r->cap = 0u;
     r->slots = 1u;
     r->elem = 1u;
+    /*@ assert fits: elem >= 1 ==> cap >= 1 ==> (cap + 1) * elem <= MT_ORING_BYTES_MAX ==>
+            cap + 1 <= MT_ORING_BYTES_MAX; */
     if ((elem < 1u) || (cap < 1u) || (cap >= MT_ORING_BYTES_MAX) ||
         ((uint64_t)elem * ((uint64_t)cap + 1u) > MT_ORING_BYTES_MAX)) {
         return MT_E_INVALID;
@@ -27,18 +44,33 @@ mt_status_t mt_oring_init(mt_oring_t *r, void *storage, uint32_t elem, uint32_t 
     r->cap = cap;
     r->slots = cap + 1u;
     r->elem = elem;
+    //@ assert bytes: r->slots * r->elem == (cap + 1) * elem;
+    //@ ghost oring_inv_intro(r);
     return MT_OK;
 }
+
+/* Lemma (ghost function, proved by WP, called only from annotations):
+ * multiplication by a positive number is monotonic. */
+/*@ ghost
+  /@ requires 0 <= a <= b;
+     requires h >= 1;
+     assigns \nothing;
+     ensures a * h <= b * h;
+  @/
+  static void mul_mono_lemma(uint32_t a, uint32_t b, uint32_t h) { }
+*/
 
 /* Byte address of slot `slot`. */
 /*@ requires MtORingInv(r);
     requires 0 <= slot < r->slots;
     assigns \nothing;
     ensures \result == r->buf + slot * r->elem;
+    ensures in_storage: 0 <= slot * r->elem && slot * r->elem + r->elem <= r->slots * r->elem;
     ensures \valid(\result + (0 .. r->elem - 1));
 */
 static uint8_t *slot_ptr(const mt_oring_t *r, uint32_t slot)
 {
+    //@ ghost mul_mono_lemma(slot + 1u, r->slots, r->elem);
     return r->buf + ((uint64_t)slot * r->elem);
 }
 
@@ -66,8 +98,8 @@ static void copy_bytes(uint8_t *dst, const uint8_t *src, uint32_t n)
     assigns r->head_cache;
     ensures MtORingInv(r);
     ensures \result == MtIdxCount(r->tail, r->head_cache, r->slots);
-    ensures \result < r->cap ==> MtORingCount(r) <= \result;
-    ensures \result >= r->cap ==> \result == MtORingCount(r);
+    ensures \result < r->cap ==> MtIdxCount(r->tail, r->head, r->slots) <= \result;
+    ensures \result >= r->cap ==> \result == MtIdxCount(r->tail, r->head, r->slots);
 */
 static uint32_t producer_count(mt_oring_t *r)
 {
@@ -81,13 +113,15 @@ static uint32_t producer_count(mt_oring_t *r)
 
 /* Write obj at the tail slot and publish it (data before index). */
 /*@ requires MtORingInv(r);
-    requires MtORingCount(r) <= r->cap;
+    requires MtIdxCount(r->tail, r->head, r->slots) <= r->cap;
     requires MtIdxCount(r->tail, r->head_cache, r->slots) <= r->cap;
     requires \valid_read(obj + (0 .. r->elem - 1));
     requires \separated(obj + (0 .. r->elem - 1), r, r->buf + (0 .. r->slots * r->elem - 1));
     assigns r->tail, r->buf[0 .. r->slots * r->elem - 1];
     ensures MtORingInv(r);
     ensures r->tail == MtIdxAdd(\old(r->tail), 1, r->slots);
+    ensures \forall integer k; 0 <= k < r->elem ==>
+        r->buf[MtIdxSlot(\old(r->tail), r->slots) * r->elem + k] == obj[k];
 */
 static void put(mt_oring_t *r, const uint8_t *obj)
 {
@@ -109,10 +143,13 @@ static void note_rejected(mt_oring_t *r)
 mt_status_t mt_oring_push(mt_oring_t *r, const void *obj)
 {
     if (producer_count(r) >= r->cap) {
+        //@ assert full: MtIdxCount(r->tail, r->head, r->slots) >= r->cap;
         note_rejected(r);
         return MT_E_FULL;
     }
     put(r, (const uint8_t *)obj);
+    /*@ assert data: \forall integer k; 0 <= k < r->elem ==>
+            r->buf[MtIdxSlot(\at(r->tail, Pre), r->slots) * r->elem + k] == ((uint8_t *)obj)[k]; */
     return MT_OK;
 }
 
@@ -146,8 +183,11 @@ uint32_t mt_oring_space(mt_oring_t *r)
     ensures MtORingInv(r);
     ensures \result == MtORingCount(r) && \result <= r->cap;
     ensures r->tail_cache == r->tail;
-    ensures MtIdxCount(r->tail, \old(r->head), r->slots) <= r->cap ==> r->head == \old(r->head);
-    ensures MtIdxCount(r->tail, \old(r->head), r->slots) > r->cap ==> r->head == MtIdxAdd(\old(r->head), 1, r->slots);
+    ensures MtIdxCount(r->tail, \old(r->head), r->slots) <= r->cap ==>
+        r->head == \old(r->head) && r->lost == \old(r->lost);
+    ensures MtIdxCount(r->tail, \old(r->head), r->slots) > r->cap ==>
+        r->head == MtIdxAdd(\old(r->head), 1, r->slots) &&
+        r->lost == (\old(r->lost) < 0xFFFFFFFF ? \old(r->lost) + 1 : \old(r->lost));
 */
 static uint32_t consumer_sync(mt_oring_t *r)
 {
@@ -178,9 +218,12 @@ uint32_t mt_oring_available(mt_oring_t *r)
 mt_status_t mt_oring_pop(mt_oring_t *r, void *out)
 {
     if (consumer_sync(r) == 0u) {
+        //@ assert was_empty: MtIdxCount(r->tail, \at(r->head, Pre), r->slots) == 0;
         return MT_E_EMPTY;
     }
     copy_bytes((uint8_t *)out, slot_ptr(r, mt_idx_slot(r->head, r->slots)), r->elem);
+    /*@ assert copied: \forall integer k; 0 <= k < r->elem ==>
+            ((uint8_t *)out)[k] == r->buf[MtIdxSlot(r->head, r->slots) * r->elem + k]; */
     /* copy done before the slot is released */
     mt_store_release_u32(&r->head, mt_idx_add(r->head, 1u, r->slots));
     return MT_OK;

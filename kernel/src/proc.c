@@ -91,6 +91,7 @@ mt_status_t mt_proc_register(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg)
     requires 0 <= i < p->count;
     assigns p->procs[i].calls, p->procs[i].max_us, p->procs[i].total_us, MtPortNow;
     ensures MtProcSetInv(p);
+    ensures MtPortNow >= \old(MtPortNow);
     ensures p->procs[i].calls == (\old(p->procs[i].calls) < 0xFFFFFFFF ? \old(p->procs[i].calls) + 1 : \old(p->procs[i].calls));
 */
 static void call_one(mt_proc_set_t *p, uint32_t i)
@@ -128,6 +129,7 @@ mt_status_t mt_proc_dispatch(mt_proc_set_t *p)
     t0 = mt_port_now_us();
     /*@ loop invariant 0 <= i <= n;
         loop invariant MtProcSetInv(p) && p->running == 1 && p->count == n;
+        loop invariant time: MtPortNow >= t0;
         loop invariant \forall integer j; 0 <= j < i ==>
             p->procs[j].calls == (\at(p->procs[j].calls, LoopEntry) < 0xFFFFFFFF ? \at(p->procs[j].calls, LoopEntry) + 1 : \at(p->procs[j].calls, LoopEntry));
         loop invariant \forall integer j; i <= j < MT_CFG_PROC_MAX ==>

@@ -34,7 +34,7 @@ mt_status_t mt_bring_init(mt_bring_t *r, uint8_t *storage, uint32_t cap)
     ensures \result >= \min(want, r->cap - MtBRingCount(r));
     ensures \result <= r->cap - MtBRingCount(r);
 */
-static uint32_t producer_free(mt_bring_t *r, uint32_t want)
+static uint32_t bring_producer_free(mt_bring_t *r, uint32_t want)
 {
     uint32_t free_now = r->cap - mt_idx_count(r->tail, r->head_cache, r->cap);
     if (free_now < want) {
@@ -68,15 +68,27 @@ uint32_t mt_bring_space(mt_bring_t *r)
     return (r->cap - mt_idx_count(r->tail, r->head_cache, r->cap)) - r->reserved;
 }
 
-uint32_t mt_bring_available(mt_bring_t *r)
+/* Consumer: reload the cached tail; returns the readable bytes. */
+/*@ requires MtBRingInv(r);
+    assigns r->tail_cache;
+    ensures MtBRingInv(r);
+    ensures r->tail_cache == r->tail;
+    ensures \result == MtBRingCount(r);
+*/
+static uint32_t bring_consumer_sync(mt_bring_t *r)
 {
     r->tail_cache = mt_load_acquire_u32(&r->tail);
     return mt_idx_count(r->tail_cache, r->head, r->cap);
 }
 
+uint32_t mt_bring_available(mt_bring_t *r)
+{
+    return bring_consumer_sync(r);
+}
+
 uint32_t mt_bring_write(mt_bring_t *r, const uint8_t *src, uint32_t len)
 {
-    uint32_t free_now = producer_free(r, len);
+    uint32_t free_now = bring_producer_free(r, len);
     uint32_t n = (len < free_now) ? len : free_now;
     uint32_t slot = mt_idx_slot(r->tail, r->cap);
     uint32_t first = r->cap - slot;
@@ -102,6 +114,18 @@ uint32_t mt_bring_write(mt_bring_t *r, const uint8_t *src, uint32_t len)
     for (k = first; k < n; k++) {
         r->buf[k - first] = src[k];
     }
+    //@ assert done: k == n;
+    //@ ghost mt_idx_slot_add_lemma(r->tail, r->cap);
+    /*@ assert lo: \forall integer j; 0 <= j < first ==>
+            MtIdxSlot(MtIdxAdd(r->tail, j, r->cap), r->cap) == slot + j; */
+    /*@ assert hi: \forall integer j; first <= j < n ==>
+            MtIdxSlot(MtIdxAdd(r->tail, j, r->cap), r->cap) == j - first; */
+    /*@ assert same_lo: \forall integer j; 0 <= j < first ==>
+            r->buf[MtIdxSlot(MtIdxAdd(r->tail, j, r->cap), r->cap)] == r->buf[slot + j]; */
+    /*@ assert data_lo: \forall integer j; 0 <= j < first ==>
+            r->buf[MtIdxSlot(MtIdxAdd(r->tail, j, r->cap), r->cap)] == src[j]; */
+    /*@ assert data_hi: \forall integer j; first <= j < n ==>
+            r->buf[MtIdxSlot(MtIdxAdd(r->tail, j, r->cap), r->cap)] == src[j]; */
     /* Data before index: the release store publishes the bytes above. */
     mt_store_release_u32(&r->tail, mt_idx_add(r->tail, n, r->cap));
     return n;
@@ -109,13 +133,15 @@ uint32_t mt_bring_write(mt_bring_t *r, const uint8_t *src, uint32_t len)
 
 uint32_t mt_bring_reserve(mt_bring_t *r, mt_iovec_t vec[2], uint32_t len)
 {
-    uint32_t free_now = producer_free(r, len);
+    uint32_t free_now = bring_producer_free(r, len);
     uint32_t n = (len < free_now) ? len : free_now;
     uint32_t slot = mt_idx_slot(r->tail, r->cap);
     uint32_t first = r->cap - slot;
     uint32_t segs;
 
     r->reserved = n;
+    //@ assert fits: n <= r->cap - MtIdxCount(r->tail, r->head_cache, r->cap) && n <= r->cap - MtBRingCount(r);
+    //@ assert inv_kept: MtBRingInv(r);
     vec[1].base = r->buf;
     vec[1].len = 0u;
     if (n == 0u) {
@@ -179,9 +205,27 @@ static void copy_out(const mt_bring_t *r, uint8_t *dst, uint32_t n)
     for (k = first; k < n; k++) {
         dst[k] = r->buf[k - first];
     }
+    //@ assert done: k == n;
+    //@ ghost mt_idx_slot_add_lemma(r->head, r->cap);
+    /*@ assert lo: \forall integer j; 0 <= j < first ==>
+            MtIdxSlot(MtIdxAdd(r->head, j, r->cap), r->cap) == slot + j; */
+    /*@ assert hi: \forall integer j; first <= j < n ==>
+            MtIdxSlot(MtIdxAdd(r->head, j, r->cap), r->cap) == j - first; */
+    //@ assert e1: \forall integer j; 0 <= j < first ==> dst[j] == MtBRingByte(r, j);
+    //@ assert e2: \forall integer j; first <= j < n ==> dst[j] == MtBRingByte(r, j);
 }
 
-uint32_t mt_bring_peek(mt_bring_t *r, uint8_t *dst, uint32_t len)
+/* Copy min(len, readable) bytes out without consuming them (peek and read). */
+/*@ requires MtBRingInv(r);
+    requires \valid(dst + (0 .. len - 1));
+    requires \separated(dst + (0 .. len - 1), r, r->buf + (0 .. r->cap - 1));
+    assigns r->tail_cache, dst[0 .. len - 1];
+    ensures MtBRingInv(r);
+    ensures \result == \min(len, MtBRingCount(r));
+    ensures \result <= MtIdxCount(r->tail_cache, r->head, r->cap);
+    ensures \forall integer k; 0 <= k < \result ==> dst[k] == MtBRingByte(r, k);
+*/
+static uint32_t copy_readable(mt_bring_t *r, uint8_t *dst, uint32_t len)
 {
     uint32_t avail = consumer_avail(r, len);
     uint32_t n = (len < avail) ? len : avail;
@@ -189,9 +233,14 @@ uint32_t mt_bring_peek(mt_bring_t *r, uint8_t *dst, uint32_t len)
     return n;
 }
 
+uint32_t mt_bring_peek(mt_bring_t *r, uint8_t *dst, uint32_t len)
+{
+    return copy_readable(r, dst, len);
+}
+
 uint32_t mt_bring_read(mt_bring_t *r, uint8_t *dst, uint32_t len)
 {
-    uint32_t n = mt_bring_peek(r, dst, len);
+    uint32_t n = copy_readable(r, dst, len);
     /* Reading done before the index moves: the release store frees the space. */
     mt_store_release_u32(&r->head, mt_idx_add(r->head, n, r->cap));
     return n;
@@ -209,7 +258,7 @@ mt_status_t mt_bring_advance(mt_bring_t *r, uint32_t n)
 
 uint32_t mt_bring_peek_vec(mt_bring_t *r, mt_iovec_t vec[2])
 {
-    uint32_t n = mt_bring_available(r);
+    uint32_t n = bring_consumer_sync(r);
     uint32_t slot = mt_idx_slot(r->head, r->cap);
     uint32_t first = r->cap - slot;
     uint32_t segs;
@@ -233,7 +282,7 @@ uint32_t mt_bring_peek_vec(mt_bring_t *r, mt_iovec_t vec[2])
 
 uint32_t mt_bring_flush(mt_bring_t *r)
 {
-    uint32_t n = mt_bring_available(r);
+    uint32_t n = bring_consumer_sync(r);
     mt_store_release_u32(&r->head, r->tail_cache);
     return n;
 }

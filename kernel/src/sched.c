@@ -22,6 +22,7 @@ static uint32_t clamp_u32(uint64_t v)
 */
 static uint64_t sat_add_u64(uint64_t a, uint64_t b)
 {
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return (a <= (UINT64_MAX - b)) ? (a + b) : UINT64_MAX;
 }
 
@@ -60,7 +61,6 @@ mt_status_t mt_sched_validate(const mt_task_t *tasks, uint32_t n, uint32_t loop_
                               uint32_t *bad_index)
 {
     uint32_t i;
-    mt_status_t st;
 
     if ((loop_rate_hz < MT_SCHED_RATE_MIN) || (loop_rate_hz > MT_SCHED_RATE_MAX)) {
         *bad_index = n;
@@ -73,11 +73,11 @@ mt_status_t mt_sched_validate(const mt_task_t *tasks, uint32_t n, uint32_t loop_
     /*@ loop invariant 0 <= i <= n;
         loop invariant \forall integer j; 0 <= j < i ==> MtTaskOk(tasks + j, loop_rate_hz);
         loop invariant \forall integer j; 0 <= j < i - 1 ==> tasks[j].priority <= tasks[j + 1].priority;
-        loop assigns i, st;
+        loop assigns i;
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {
-        st = mt_sched_check_entry(tasks, n, i, loop_rate_hz);
+        mt_status_t st = mt_sched_check_entry(tasks, n, i, loop_rate_hz);
         if (st != MT_OK) {
             *bad_index = i;
             return st;
@@ -85,6 +85,23 @@ mt_status_t mt_sched_validate(const mt_task_t *tasks, uint32_t n, uint32_t loop_
     }
     return MT_OK;
 }
+
+/* Lemma (ghost function, proved by WP): MtSchedInv from its parts, so that the
+ * solvers unfold the invariant once, in a small context. */
+/*@ ghost
+  /@ requires \valid(s) && MtTableOk(s->tasks, s->ntasks, s->loop_rate_hz);
+     requires \separated(s, s->tasks + (0 .. s->ntasks - 1));
+     requires s->period_us == 1000000 / s->loop_rate_hz;
+     requires s->extra_us == 0 && s->spare_ticks == 0 && s->spare_us == 0 && s->clean_loops == 0;
+     requires s->tick == 0 && s->run_tick == 0;
+     requires \forall integer j; 0 <= j < s->ntasks ==>
+        s->st[j].interval == MtInterval(s->tasks + j, s->loop_rate_hz) &&
+        s->st[j].interval >= 1 && s->st[j].last_run <= s->run_tick && s->st[j].runs <= s->run_tick;
+     assigns \nothing;
+     ensures MtSchedInv(s);
+  @/
+  static void sched_inv_intro(mt_sched_t *s) { }
+*/
 
 mt_status_t mt_sched_init(mt_sched_t *s, const mt_task_t *tasks, uint32_t n,
                           uint32_t loop_rate_hz, uint32_t *bad_index)
@@ -95,6 +112,7 @@ mt_status_t mt_sched_init(mt_sched_t *s, const mt_task_t *tasks, uint32_t n,
     if (st != MT_OK) {
         return st;
     }
+    //@ assert table: MtTableOk(tasks, n, loop_rate_hz);
     s->tasks = tasks;
     s->ntasks = n;
     s->loop_rate_hz = loop_rate_hz;
@@ -102,9 +120,14 @@ mt_status_t mt_sched_init(mt_sched_t *s, const mt_task_t *tasks, uint32_t n,
     s->current = MT_SCHED_IDLE;
     s->tick = 0u;
     s->run_tick = 0u;
+    //@ assert set: s->tasks == tasks && s->ntasks == n && s->loop_rate_hz == loop_rate_hz;
     /*@ loop invariant 0 <= i <= MT_CFG_SCHED_MAX_TASKS;
+        loop invariant tbl: MtTableOk(tasks, n, loop_rate_hz);
+        loop invariant fields: s->tasks == tasks && s->ntasks == n && s->loop_rate_hz == loop_rate_hz &&
+            s->tick == 0 && s->run_tick == 0 && s->period_us == 1000000 / loop_rate_hz &&
+            s->current == MT_SCHED_IDLE;
         loop invariant \forall integer j; 0 <= j < i ==> j < n ==>
-            s->st[j].interval == MtInterval(s->tasks + j, loop_rate_hz) && s->st[j].runs == 0 &&
+            s->st[j].interval == MtInterval(tasks + j, loop_rate_hz) && s->st[j].runs == 0 &&
             s->st[j].last_run == 0 && s->st[j].slips == 0 && s->st[j].overruns == 0;
         loop invariant \forall integer j; 0 <= j < i ==> s->st[j].interval >= 1;
         loop assigns i, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1];
@@ -141,6 +164,11 @@ mt_status_t mt_sched_init(mt_sched_t *s, const mt_task_t *tasks, uint32_t n,
     s->last_sample_us = 0u;
     s->task_start_us = 0u;
     s->task_allowed_us = 0u;
+    //@ assert tbl_end: MtTableOk(s->tasks, s->ntasks, s->loop_rate_hz);
+    /*@ assert st_end: \forall integer j; 0 <= j < s->ntasks ==>
+            s->st[j].interval == MtInterval(s->tasks + j, s->loop_rate_hz) &&
+            s->st[j].interval >= 1 && s->st[j].last_run <= s->run_tick && s->st[j].runs <= s->run_tick; */
+    //@ ghost sched_inv_intro(s);
     return MT_OK;
 }
 
@@ -177,7 +205,7 @@ static void note_run(mt_sched_t *s, uint32_t i, uint64_t taken_us, uint32_t allo
     e->last_run = s->tick;
 }
 
-/* Run task i with allowance allowed_us; returns the time it took. */
+/* Run task i with allowance allowed_us; returns the time at which it ended. */
 /*@ requires MtSchedInv(s);
     requires i < s->ntasks;
     requires s->st[i].runs < s->tick;
@@ -187,20 +215,22 @@ static void note_run(mt_sched_t *s, uint32_t i, uint64_t taken_us, uint32_t allo
     ensures s->current == MT_SCHED_IDLE;
     ensures s->st[i].runs == \old(s->st[i].runs) + 1;
     ensures s->st[i].last_run == s->tick;
+    ensures \result == MtPortNow && \result >= \old(MtPortNow);
 */
 static uint64_t run_task(mt_sched_t *s, uint32_t i, uint32_t allowed_us)
 {
     uint64_t t0 = mt_port_now_us();
-    uint64_t taken;
+    uint64_t t1;
 
     s->task_start_us = t0;
     s->task_allowed_us = allowed_us;
     s->current = (int32_t)i;
+    // cppcheck-suppress misra-c2012-11.8 ; D-103 no cast: the const table holds a void * by value
     mt_invoke(s->tasks[i].fn, s->tasks[i].arg);
     s->current = MT_SCHED_IDLE;
-    taken = mt_port_now_us() - t0;
-    note_run(s, i, taken, allowed_us);
-    return taken;
+    t1 = mt_port_now_us();
+    note_run(s, i, t1 - t0, allowed_us);
+    return t1;
 }
 
 /* Slip and lateness accounting for a normal task that runs dt ticks after its
@@ -232,16 +262,33 @@ static void note_release(mt_sched_t *s, uint32_t i, uint64_t dt)
 uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us)
 {
     uint32_t avail = time_available_us;
+    uint64_t start;
     uint32_t i;
 
     if (s->run_tick == s->tick) {
         return avail; /* this tick has been run already */
     }
     s->run_tick = s->tick;
+    start = mt_port_now_us();
     /*@ loop invariant 0 <= i <= s->ntasks;
         loop invariant MtSchedInv(s) && s->run_tick == s->tick;
         loop invariant avail <= time_available_us;
-        loop invariant s->current == MT_SCHED_IDLE;
+        loop invariant crumb: s->current == \at(s->current, Pre) || s->current == MT_SCHED_IDLE;
+        loop invariant start <= MtPortNow;
+        loop invariant new_tick: \at(s->run_tick, Pre) < s->tick;
+        loop invariant intervals: \forall integer j; 0 <= j < s->ntasks ==>
+            s->st[j].interval == \at(s->st[j].interval, Pre);
+        loop invariant todo: \forall integer j; i <= j < s->ntasks ==>
+            s->st[j].runs == \at(s->st[j].runs, Pre) && s->st[j].last_run == \at(s->st[j].last_run, Pre);
+        loop invariant done: \forall integer j; 0 <= j < i ==>
+            (s->st[j].runs == \at(s->st[j].runs, Pre) && s->st[j].last_run == \at(s->st[j].last_run, Pre)) ||
+            (s->st[j].runs == \at(s->st[j].runs, Pre) + 1 && s->st[j].last_run == s->tick);
+        loop invariant fast: \forall integer j; 0 <= j < i ==> MtTaskFast(s->tasks + j) ==>
+            s->st[j].runs == \at(s->st[j].runs, Pre) + 1;
+        loop invariant not_due: \forall integer j; 0 <= j < i ==> !MtTaskFast(s->tasks + j) ==>
+            s->tick - \at(s->st[j].last_run, Pre) < s->st[j].interval ==> s->st[j].runs == \at(s->st[j].runs, Pre);
+        loop invariant budget: \forall integer j; 0 <= j < i ==> !MtTaskFast(s->tasks + j) ==>
+            s->tasks[j].budget_us > time_available_us ==> s->st[j].runs == \at(s->st[j].runs, Pre);
         loop assigns i, avail, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop,
                      s->task_start_us, s->task_allowed_us, MtPortNow;
         loop variant s->ntasks - i;
@@ -249,7 +296,7 @@ uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us)
     for (i = 0u; i < s->ntasks; i++) {
         const mt_task_t *t = &s->tasks[i];
         uint32_t allowed;
-        uint64_t taken;
+        uint64_t end;
 
         if (t->priority < MT_SCHED_FAST_PRIO_LIMIT) {
             /* fast task: every tick, whatever is left */
@@ -267,8 +314,11 @@ uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us)
             note_release(s, i, dt);
             allowed = t->budget_us;
         }
-        taken = run_task(s, i, allowed);
-        avail = (taken >= avail) ? 0u : (avail - (uint32_t)taken);
+        end = run_task(s, i, allowed);
+        /* S-9: the budget shrinks by the wall time since the scan started, so
+         * time between tasks and pre-emption by other threads count too */
+        avail = ((end - start) >= time_available_us) ? 0u
+                                                     : (time_available_us - (uint32_t)(end - start));
     }
     return avail;
 }
@@ -343,6 +393,7 @@ void mt_sched_loop_once(mt_sched_t *s, mt_sample_wait_fn_t wait, void *ctx)
     mt_sched_note_sample(s, sample);
     mt_sched_tick(s);
     now = mt_port_now_us();
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     elapsed = (now >= sample) ? (now - sample) : 0u;
     avail = (elapsed >= s->period_us) ? 0u : (s->period_us - (uint32_t)elapsed);
     avail += s->extra_us;

@@ -8,7 +8,11 @@
 
 void mt_sem_init(mt_sem_t *s, bool available)
 {
-    s->token = available ? 1u : 0u;
+    if (available) {
+        s->token = 1u;
+    } else {
+        s->token = 0u;
+    }
     s->waiter = (mt_port_tref_t)0;
     s->merged = 0u;
 }

@@ -5,9 +5,6 @@
  */
 #include "mt/status.h"
 
-/*@ assigns \nothing;
-    ensures named: \result != \null;
-*/
 const char *mt_status_str(mt_status_t st)
 {
     const char *name;

@@ -5,6 +5,8 @@
  */
 #include "mt/time.h"
 
+#include "mt_spec_arith.h"
+
 mt_status_t mt_time_ext_init(mt_time_ext_t *t, uint32_t hw_max, uint32_t hw_now)
 {
     t->ticks = 0u;
@@ -38,6 +40,14 @@ uint64_t mt_time_ticks_to_us(uint64_t ticks, uint32_t hz)
 {
     uint64_t whole = ticks / hz;
     uint64_t part = ((ticks % hz) * 1000000u) / hz; /* < 1e6, no overflow: (hz-1)*1e6 < 2^63 */
+
+    /* floor(ticks * 1e6 / hz) == whole * 1e6 + part, by uniqueness of the quotient */
+    //@ assert split: ticks == whole * hz + ticks % hz && 0 <= ticks % hz < hz;
+    //@ assert part_lo: part * hz <= (ticks % hz) * 1000000;
+    //@ assert part_hi: (ticks % hz) * 1000000 < (part + 1) * hz;
+    //@ assert q_lo: (whole * 1000000 + part) * hz <= ticks * 1000000;
+    //@ assert q_hi: ticks * 1000000 < (whole * 1000000 + part + 1) * hz;
+    //@ assert quot: (ticks * 1000000) / hz == whole * 1000000 + part;
 
     if (whole > ((UINT64_MAX - part) / 1000000u)) {
         return UINT64_MAX;

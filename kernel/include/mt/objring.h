@@ -77,7 +77,8 @@ typedef struct {
  *          MT_ORING_BYTES_MAX (the ring is left unusable, cap 0). */
 /*@ requires valid: \valid(r);
     requires storage: elem >= 1 ==> cap >= 1 ==> (cap + 1) * elem <= MT_ORING_BYTES_MAX ==>
-        \valid(storage + (0 .. (cap + 1) * elem - 1)) && \separated(r, storage + (0 .. (cap + 1) * elem - 1));
+        \valid((uint8_t *)storage + (0 .. (cap + 1) * elem - 1)) &&
+        \separated(r, (uint8_t *)storage + (0 .. (cap + 1) * elem - 1));
     assigns *r;
     behavior ok:
       assumes elem >= 1 && cap >= 1 && (cap + 1) * elem <= MT_ORING_BYTES_MAX;
@@ -119,8 +120,12 @@ mt_status_t mt_oring_push(mt_oring_t *r, const void *obj);
 /** Append a copy of obj; on a full ring the oldest object will be dropped by
  *  the consumer. [producer]
  *  @retval MT_OK                stored, nothing dropped.
- *  @retval MT_W_DROPPED_OLDEST  stored in the spare slot; the oldest unread
- *                               object is discarded (and counted) by the consumer.
+ *  @retval MT_W_DROPPED_OLDEST  the ring was full when the push looked: stored in
+ *                               the spare slot, and the consumer discards the oldest
+ *                               object unless it consumed it meanwhile (a concurrent
+ *                               pop can make the drop unnecessary; tla/SpscRing.tla,
+ *                               config SpscRing_drop_report). The status is therefore
+ *                               an upper bound; `lost` counts the actual drops.
  *  @retval MT_E_FULL            the consumer has not caught up since the last
  *                               drop; nothing written (counted in rejected). */
 /*@ requires inv: MtORingInv(r);

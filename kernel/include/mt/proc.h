@@ -156,7 +156,8 @@ mt_status_t mt_proc_dispatch(mt_proc_set_t *p);
     ensures grid: (*deadline - \old(*deadline)) % period_us == 0;
     ensures on_time: \old(*deadline) + period_us > now ==> \result == 0 && *deadline == \old(*deadline) + period_us;
     ensures late: \old(*deadline) + period_us <= now ==>
-        \result == (now - \old(*deadline)) / period_us && *deadline > now && *deadline <= now + period_us;
+        \result == ((now - \old(*deadline)) / period_us <= 0xFFFFFFFF ? (now - \old(*deadline)) / period_us : 0xFFFFFFFF) &&
+        *deadline > now && *deadline <= now + period_us;
 */
 uint32_t mt_proc_period_next(uint64_t *deadline, uint64_t now, uint32_t period_us);
 

@@ -77,7 +77,8 @@ typedef struct {
         MtIdxCount(r->head, r->head_cache, r->cap) <= MtIdxCount(r->tail, r->head_cache, r->cap) &&
         MtIdxCount(r->tail, r->head_cache, r->cap) <= r->cap &&
         MtIdxCount(r->tail_cache, r->head, r->cap) <= MtIdxCount(r->tail, r->head, r->cap) &&
-        r->reserved <= r->cap - MtIdxCount(r->tail, r->head, r->cap);
+        r->reserved <= r->cap - MtIdxCount(r->tail, r->head, r->cap) &&
+        r->reserved <= r->cap - MtIdxCount(r->tail, r->head_cache, r->cap);
 
     logic integer MtBRingCount(mt_bring_t *r) = MtIdxCount(r->tail, r->head, r->cap);
 

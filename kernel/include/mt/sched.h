@@ -32,7 +32,9 @@
  * 32-bit intervals; S-5 a normal task with budget 0 is rejected at init; S-6
  * state is a fixed array zeroed at init (no allocation); S-7 statistics are
  * 32/64-bit, saturating, and means are guarded against zero runs; S-8 load is
- * 0 when the average spare time exceeds the period.
+ * 0 when the average spare time exceeds the period; S-9 the time left shrinks
+ * by the wall time since the scan began, so gaps between tasks and pre-emption
+ * by other threads are charged too, not only the tasks' own run times.
  */
 #ifndef MT_SCHED_H
 #define MT_SCHED_H
@@ -167,7 +169,7 @@ typedef struct {
         (\forall integer i; 0 <= i < n - 1 ==> tasks[i].priority <= tasks[i + 1].priority);
 
     logic integer MtInterval(mt_task_t *t, integer rate_hz) =
-        MtTaskFast(t) ? 1 : (rate_hz * 1000) / t->rate_mhz;
+        t->priority < MT_SCHED_FAST_PRIO_LIMIT ? 1 : (rate_hz * 1000) / t->rate_mhz;
 
     predicate MtSchedInv(mt_sched_t *s) =
         \valid(s) && MtTableOk(s->tasks, s->ntasks, s->loop_rate_hz) &&
@@ -175,6 +177,8 @@ typedef struct {
         s->period_us == 1000000 / s->loop_rate_hz &&
         s->extra_us <= MT_SCHED_EXTRA_MAX_US && s->spare_ticks < MT_SCHED_SPARE_WINDOW &&
         s->spare_us <= (integer)MT_SCHED_SPARE_WINDOW * 2 * 0xFFFFFFFF &&
+        s->spare_us <= ((integer)s->spare_ticks + MT_SCHED_SPARE_WINDOW) * 0xFFFFFFFF &&
+        s->clean_loops <= MT_SCHED_CLEAN_LOOPS &&
         s->tick < 0xFFFFFFFFFFFFFFFF && s->run_tick <= s->tick &&
         (\forall integer i; 0 <= i < s->ntasks ==>
             s->st[i].interval == MtInterval(s->tasks + i, s->loop_rate_hz) &&
@@ -206,7 +210,7 @@ mt_status_t mt_sched_check_entry(const mt_task_t *tasks, uint32_t n, uint32_t i,
     requires table: n >= 1 ==> n <= MT_CFG_SCHED_MAX_TASKS ==> \valid_read(tasks + (0 .. n - 1));
     requires sep: \separated(bad_index, tasks + (0 .. n - 1));
     assigns *bad_index;
-    ensures ok: \result == MT_OK <==> MtTableOk(tasks, n, loop_rate_hz);
+    ensures ok: \result == MT_OK <==> \old(MtTableOk(tasks, n, loop_rate_hz));
     ensures where: \result != MT_OK ==> *bad_index <= n;
     ensures rate: (loop_rate_hz < MT_SCHED_RATE_MIN || loop_rate_hz > MT_SCHED_RATE_MAX) ==>
                   \result == MT_E_LOOP_RATE;
@@ -256,7 +260,8 @@ void mt_sched_tick(mt_sched_t *s);
     assigns s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop, s->run_tick,
             s->task_start_us, s->task_allowed_us, MtPortNow;
     ensures inv: MtSchedInv(s);
-    ensures idle: s->current == MT_SCHED_IDLE;
+    ensures idle: \old(s->current) == MT_SCHED_IDLE ==> s->current == MT_SCHED_IDLE;
+    ensures crumb: s->current == \old(s->current) || s->current == MT_SCHED_IDLE;
     ensures left: \result <= time_available_us;
     ensures run_tick: s->run_tick == s->tick;
     ensures once_per_tick: \forall integer i; 0 <= i < s->ntasks ==>
@@ -273,6 +278,8 @@ void mt_sched_tick(mt_sched_t *s);
         s->tick - \old(s->st[i].last_run) < s->st[i].interval ==> s->st[i].runs == \old(s->st[i].runs);
     ensures budget_rule: \forall integer i; 0 <= i < s->ntasks ==> !MtTaskFast(s->tasks + i) ==>
         s->tasks[i].budget_us > time_available_us ==> s->st[i].runs == \old(s->st[i].runs);
+    ensures intervals_kept: \forall integer i; 0 <= i < s->ntasks ==>
+        s->st[i].interval == \old(s->st[i].interval);
 */
 uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us);
 

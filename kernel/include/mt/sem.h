@@ -64,6 +64,7 @@ void mt_sem_init(mt_sem_t *s, bool available);
       assumes s->token == 1;
       ensures status: \result == MT_OK;
       ensures taken: s->token == 0;
+      ensures no_waiter: s->waiter == \old(s->waiter);
     behavior busy:
       assumes s->token == 0 && s->waiter != \null;
       ensures status: \result == MT_E_BUSY;
@@ -98,6 +99,7 @@ mt_status_t mt_sem_wait(mt_sem_t *s, uint64_t timeout_us);
     assigns s->token, s->waiter, s->merged;
     ensures inv: MtSemInv(s);
     ensures no_waiter: s->waiter == \null;
+    ensures merged_monotonic: s->merged >= \old(s->merged);
     behavior handoff:
       assumes s->waiter != \null;
       ensures direct: s->token == 0;

@@ -32,12 +32,16 @@ typedef enum {
     MT_E_TASK_COUNT = 11,    /**< Task table: no tasks, or more than MT_CFG_SCHED_MAX_TASKS. */
     MT_E_LOOP_RATE = 12,     /**< Scheduler: loop rate outside [MT_SCHED_RATE_MIN, MAX]. */
     MT_E_TASK_FN = 13,       /**< Task table: an entry has no function. */
-    MT_W_DROPPED_OLDEST = 14, /**< Pushed; the oldest unread object will be discarded by the
-                                   consumer (counted on both sides). */
+    MT_W_DROPPED_OLDEST = 14, /**< Pushed into the spare slot of a ring that was full when the
+                                   push looked: the consumer discards the oldest object unless
+                                   it consumed it meanwhile; its `lost` counts actual drops. */
     MT_STATUS_COUNT = 15     /**< Number of statuses (sentinel, not a status). */
 } mt_status_t;
 
 /** Short stable name of a status ("MT_E_FULL"); "MT_STATUS_?" for an unknown value. */
+/*@ assigns \nothing;
+    ensures named: \result != \null;
+*/
 const char *mt_status_str(mt_status_t st);
 
 #ifdef __cplusplus
