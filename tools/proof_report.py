@@ -45,10 +45,10 @@ def wp_rows(wp):
         funcs = m.get("functions") or {}
         if not funcs:
             rows.append((mod, "*", m.get("proved", 0), m.get("goals", 0),
-                         m.get("smoke_passed", 0), m.get("smoke", 0), m.get("seconds", 0.0)))
+                         m.get("smoke_passed", 0), m.get("smoke", 0), m.get("time_s", 0.0)))
         for fn, f in sorted(funcs.items()):
             rows.append((mod, fn, f.get("proved", 0), f.get("goals", 0),
-                         f.get("smoke_passed", 0), f.get("smoke", 0), f.get("seconds", 0.0)))
+                         f.get("smoke_passed", 0), f.get("smoke", 0), f.get("time_s", 0.0)))
     return rows
 
 
@@ -165,7 +165,8 @@ def main():
     cb_cases = [case("cbmc", r.get("function", "?"), r.get("failed", 1) == 0,
                      f"{r.get('failed')} failed, coverage {r.get('coverage')}%", r.get("seconds", 0.0))
                 for r in (cbmc or {}).get("results", [])]
-    tl_cases = [case("tla", m.get("name", "?"), m.get("ok", False), m.get("detail", ""),
+    tl_cases = [case("tla", m.get("name", "?"), m.get("ok", False),
+                     f"expected {m.get('expect')}, got {m.get('result')}",
                      float(m.get("seconds", 0.0))) for m in (tla or {}).get("models", [])]
     for name, cases in (("wp", wp_cases), ("cbmc", cb_cases), ("tla", tl_cases)):
         fails = sum(1 for c in cases if "<failure" in c)
@@ -215,8 +216,8 @@ def main():
         md += ["## TLA+ models", "", "| model | config | expected | result | distinct states | time (s) |",
                "|---|---|---|---|---|---|"]
         for m in tla.get("models", []):
-            md.append(f"| {m.get('model', m.get('name'))} | {m.get('config', '')} | {m.get('expected', '')} | "
-                      f"{'as expected' if m.get('ok') else 'UNEXPECTED'} | {m.get('distinct', '')} | {m.get('seconds', '')} |")
+            md.append(f"| {m.get('module', m.get('name'))} | {m.get('config', '')} | {m.get('expect', '')} | "
+                      f"{'as expected' if m.get('ok') else 'UNEXPECTED'} | {m.get('distinct_states', '')} | {m.get('seconds', '')} |")
         md.append("")
     md += ["## Assumptions", "",
            "Every fact the proofs take without proving it. Each is a reviewable trust point.", "",
