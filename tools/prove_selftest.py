@@ -91,10 +91,15 @@ def main():
             wp_kill = None  # inconclusive: the function has open goals without the mutation
         harness = m.get("harness", m["function"])
         cb_kill = None  # no harness for this function yet: CBMC has no verdict
-        if os.path.isdir(os.path.join(work, "proofs", "cbmc", "proofs", harness)):
-            cb_rc = run(["make", "--no-print-directory", f"cbmc-{harness}"], work,
-                        os.path.join(work, "cbmc.log"))
-            cb_kill = cb_rc != 0
+        # CBMC gives a verdict only when the harness's make target exists (a missing rule
+        # is not a rejection) and the run says VERIFICATION FAILED.
+        target = f"cbmc-{harness}"
+        if subprocess.run(["make", "-n", target], cwd=work, stdout=subprocess.DEVNULL,
+                          stderr=subprocess.DEVNULL).returncode == 0:
+            cb_log = os.path.join(work, "cbmc.log")
+            cb_rc = run(["make", "--no-print-directory", target], work, cb_log)
+            with open(cb_log, encoding="utf-8", errors="replace") as f:
+                cb_kill = cb_rc != 0 and "VERIFICATION FAILED" in f.read()
         k = bool(wp_kill) or bool(cb_kill)
         killed += 1 if k else 0
         secs = time.time() - t0
