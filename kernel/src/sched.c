@@ -86,21 +86,198 @@ mt_status_t mt_sched_validate(const mt_task_t *tasks, uint32_t n, uint32_t loop_
     return MT_OK;
 }
 
-/* Lemma (ghost function, proved by WP): MtSchedInv from its parts, so that the
- * solvers unfold the invariant once, in a small context. */
+/* Lemma (ghost function, proved by WP): MtSchedInv from its parts. A function that
+ * changes *s calls it at its end: each part is then a goal of its own, in the final
+ * memory state, and the solvers unfold the invariant once, in a small context. */
 /*@ ghost
-  /@ requires \valid(s) && MtTableOk(s->tasks, s->ntasks, s->loop_rate_hz);
-     requires \separated(s, s->tasks + (0 .. s->ntasks - 1));
-     requires s->period_us == 1000000 / s->loop_rate_hz;
-     requires s->extra_us == 0 && s->spare_ticks == 0 && s->spare_us == 0 && s->clean_loops == 0;
-     requires s->tick == 0 && s->run_tick == 0;
-     requires \forall integer j; 0 <= j < s->ntasks ==>
-        s->st[j].interval == MtInterval(s->tasks + j, s->loop_rate_hz) &&
-        s->st[j].interval >= 1 && s->st[j].last_run <= s->run_tick && s->st[j].runs <= s->run_tick;
+  /@ requires core: MtSchedCore(s);
+     requires window: s->extra_us <= MT_SCHED_EXTRA_MAX_US && s->spare_ticks < MT_SCHED_SPARE_WINDOW &&
+                      s->clean_loops <= MT_SCHED_CLEAN_LOOPS;
+     requires spare: s->spare_us <= (integer)MT_SCHED_SPARE_WINDOW * 2 * 0xFFFFFFFF &&
+                     s->spare_us <= ((integer)s->spare_ticks + MT_SCHED_SPARE_WINDOW) * 0xFFFFFFFF;
+     requires ticks: s->tick < 0xFFFFFFFFFFFFFFFF && s->run_tick <= s->tick;
+     requires states: \forall integer j; 0 <= j < s->ntasks ==>
+        s->st[j].last_run <= s->run_tick && s->st[j].runs <= s->run_tick;
      assigns \nothing;
      ensures MtSchedInv(s);
   @/
   static void sched_inv_intro(mt_sched_t *s) { }
+*/
+
+/* Ticks between releases of a task of a validated table. */
+/*@ requires valid: \valid_read(t);
+    requires ok: MtTaskOk(t, rate_hz);
+    requires rate: MT_SCHED_RATE_MIN <= rate_hz <= MT_SCHED_RATE_MAX;
+    assigns \nothing;
+    ensures value: \result == MtInterval(t, rate_hz);
+    ensures positive: \result >= 1;
+*/
+static uint32_t task_interval(const mt_task_t *t, uint32_t rate_hz)
+{
+    uint32_t interval = 1u;
+
+    if (t->priority >= MT_SCHED_FAST_PRIO_LIMIT) {
+        /* rate <= loop rate (validated), so the interval is >= 1 */
+        interval = (rate_hz * 1000u) / t->rate_mhz;
+        //@ assert positive: interval >= 1;
+    }
+    return interval;
+}
+
+/* Fresh run-time state with the given interval. */
+/*@ requires valid: \valid(e);
+    assigns *e;
+    ensures fresh: e->interval == interval && e->last_run == 0 && e->runs == 0 && e->slips == 0 &&
+                   e->overruns == 0 && e->min_us == 0 && e->max_us == 0 && e->total_us == 0 &&
+                   e->not_achieved == 0 && e->budget_skips == 0;
+*/
+static void state_init(mt_task_state_t *e, uint32_t interval)
+{
+    e->last_run = 0u;
+    e->interval = interval;
+    e->min_us = 0u;
+    e->max_us = 0u;
+    e->overruns = 0u;
+    e->runs = 0u;
+    e->total_us = 0u;
+    e->slips = 0u;
+    e->not_achieved = 0u;
+    e->budget_skips = 0u;
+}
+
+/* What mt_sched_init() establishes before it sets the scalars, kept by each group of stores. */
+/*@ predicate MtInitFacts(mt_sched_t *s, mt_task_t *tasks, integer n, integer rate_hz) =
+        MtTableOk(tasks, n, rate_hz) &&
+        (\forall integer j; 0 <= j < n ==>
+            s->st[j].interval == MtInterval(tasks + j, rate_hz) && s->st[j].interval >= 1 &&
+            s->st[j].last_run == 0 && s->st[j].runs == 0 && s->st[j].slips == 0 && s->st[j].overruns == 0);
+*/
+
+/* The locations MtInitFacts reads are the same at L1 and L2. */
+/*@ predicate MtInitKept{L1, L2}(mt_sched_t *s, mt_task_t *tasks, integer n) =
+        MtTableKept{L1, L2}(tasks, n) &&
+        (\forall integer j; 0 <= j < n ==>
+            \at(s->st[j].interval, L1) == \at(s->st[j].interval, L2) &&
+            \at(s->st[j].last_run, L1) == \at(s->st[j].last_run, L2) &&
+            \at(s->st[j].runs, L1) == \at(s->st[j].runs, L2) &&
+            \at(s->st[j].slips, L1) == \at(s->st[j].slips, L2) &&
+            \at(s->st[j].overruns, L1) == \at(s->st[j].overruns, L2));
+
+    lemma MtInitFacts_kept{L1, L2}: \forall mt_sched_t *s, mt_task_t *tasks, integer n, r;
+        MtInitFacts{L1}(s, tasks, n, r) ==> MtInitKept{L1, L2}(s, tasks, n) ==>
+        \valid_read{L2}(tasks + (0 .. n - 1)) ==> MtInitFacts{L2}(s, tasks, n, r);
+*/
+
+/* The scalar fields of a fresh scheduler, in small groups by type: each group is a function
+ * of its own so that each frame goal (the table and the per-task states are kept) starts from
+ * the function's own pre-state and stays small enough for the solvers. */
+/*@ requires valid: \valid(s);
+    requires facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+    requires sep: \separated(s, tasks + (0 .. n - 1));
+    assigns s->tasks, s->ntasks, s->loop_rate_hz, s->period_us, s->current;
+    ensures set: s->tasks == tasks && s->ntasks == n && s->loop_rate_hz == loop_rate_hz && s->period_us == 1000000 / loop_rate_hz && s->current == MT_SCHED_IDLE;
+    ensures facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+*/
+static void init_table_fields(mt_sched_t *s, const mt_task_t *tasks, uint32_t n, uint32_t loop_rate_hz)
+{
+    s->tasks = tasks;
+    s->ntasks = n;
+    s->loop_rate_hz = loop_rate_hz;
+    s->period_us = 1000000u / loop_rate_hz;
+    s->current = MT_SCHED_IDLE;
+}
+
+/*@ requires valid: \valid(s);
+    requires facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+    requires sep: \separated(s, tasks + (0 .. n - 1));
+    assigns s->tick, s->run_tick, s->spare_us, s->loops;
+    ensures set: s->tick == 0 && s->run_tick == 0 && s->spare_us == 0 && s->loops == 0;
+    ensures facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+*/
+static void init_ticks(mt_sched_t *s, const mt_task_t *tasks, uint32_t n, uint32_t loop_rate_hz)
+{
+    /* the table arguments name the facts of the contract only */
+    (void)tasks;
+    (void)n;
+    (void)loop_rate_hz;
+    s->tick = 0u;
+    s->run_tick = 0u;
+    s->spare_us = 0u;
+    s->loops = 0u;
+    //@ assert kept: MtInitKept{Pre, Here}(s, tasks, n);
+}
+
+/*@ requires valid: \valid(s);
+    requires facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+    requires sep: \separated(s, tasks + (0 .. n - 1));
+    assigns s->loop_total_us, s->last_sample_us, s->task_start_us;
+    ensures set: s->loop_total_us == 0 && s->last_sample_us == 0 && s->task_start_us == 0;
+    ensures facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+*/
+static void init_times(mt_sched_t *s, const mt_task_t *tasks, uint32_t n, uint32_t loop_rate_hz)
+{
+    /* the table arguments name the facts of the contract only */
+    (void)tasks;
+    (void)n;
+    (void)loop_rate_hz;
+    s->loop_total_us = 0u;
+    s->last_sample_us = 0u;
+    s->task_start_us = 0u;
+    //@ assert kept: MtInitKept{Pre, Here}(s, tasks, n);
+}
+
+/*@ requires valid: \valid(s);
+    requires facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+    requires sep: \separated(s, tasks + (0 .. n - 1));
+    assigns s->extra_us, s->clean_loops, s->late_in_loop, s->spare_ticks;
+    ensures set: s->extra_us == 0 && s->clean_loops == 0 && s->late_in_loop == 0 && s->spare_ticks == 0;
+    ensures facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+*/
+static void init_window(mt_sched_t *s, const mt_task_t *tasks, uint32_t n, uint32_t loop_rate_hz)
+{
+    /* the table arguments name the facts of the contract only */
+    (void)tasks;
+    (void)n;
+    (void)loop_rate_hz;
+    s->extra_us = 0u;
+    s->clean_loops = 0u;
+    s->late_in_loop = 0u;
+    s->spare_ticks = 0u;
+    //@ assert kept: MtInitKept{Pre, Here}(s, tasks, n);
+}
+
+/*@ requires valid: \valid(s);
+    requires facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+    requires sep: \separated(s, tasks + (0 .. n - 1));
+    assigns s->filtered_loop_q8, s->loop_min_us, s->loop_max_us, s->long_loops, s->task_allowed_us;
+    ensures set: s->filtered_loop_q8 == (1000000 / loop_rate_hz) * 256 && s->loop_min_us == 0 && s->loop_max_us == 0 && s->long_loops == 0 && s->task_allowed_us == 0;
+    ensures facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+*/
+static void init_loop_stats(mt_sched_t *s, const mt_task_t *tasks, uint32_t n, uint32_t loop_rate_hz)
+{
+    /* the table arguments name the facts of the contract only */
+    (void)tasks;
+    (void)n;
+    s->filtered_loop_q8 = (1000000u / loop_rate_hz) * 256u;
+    s->loop_min_us = 0u;
+    s->loop_max_us = 0u;
+    s->long_loops = 0u;
+    s->task_allowed_us = 0u;
+    //@ assert kept: MtInitKept{Pre, Here}(s, tasks, n);
+}
+
+/* Lemma (ghost function, proved by WP): the invariant of a freshly set up scheduler. */
+/*@ ghost
+  /@ requires valid: \valid(s);
+     requires facts: MtInitFacts(s, tasks, n, rate_hz);
+     requires sep: \separated(s, tasks + (0 .. n - 1));
+     requires fields: s->tasks == tasks && s->ntasks == n && s->loop_rate_hz == rate_hz &&
+                      s->period_us == 1000000 / rate_hz && s->tick == 0 && s->run_tick == 0 &&
+                      s->extra_us == 0 && s->clean_loops == 0 && s->spare_us == 0 && s->spare_ticks == 0;
+     assigns \nothing;
+     ensures MtSchedInv(s);
+  @/
+  static void sched_inv_fresh(mt_sched_t *s, const mt_task_t *tasks, uint32_t n, uint32_t rate_hz) { }
 */
 
 mt_status_t mt_sched_init(mt_sched_t *s, const mt_task_t *tasks, uint32_t n,
@@ -112,63 +289,33 @@ mt_status_t mt_sched_init(mt_sched_t *s, const mt_task_t *tasks, uint32_t n,
     if (st != MT_OK) {
         return st;
     }
-    //@ assert table: MtTableOk(tasks, n, loop_rate_hz);
-    s->tasks = tasks;
-    s->ntasks = n;
-    s->loop_rate_hz = loop_rate_hz;
-    s->period_us = 1000000u / loop_rate_hz;
-    s->current = MT_SCHED_IDLE;
-    s->tick = 0u;
-    s->run_tick = 0u;
-    //@ assert set: s->tasks == tasks && s->ntasks == n && s->loop_rate_hz == loop_rate_hz;
+    //@ assert table: MtTableOk{Pre}(tasks, n, loop_rate_hz);
+    /* Per-task state first (the loop writes s->st only), then the scalars. */
     /*@ loop invariant 0 <= i <= MT_CFG_SCHED_MAX_TASKS;
-        loop invariant tbl: MtTableOk(tasks, n, loop_rate_hz);
-        loop invariant fields: s->tasks == tasks && s->ntasks == n && s->loop_rate_hz == loop_rate_hz &&
-            s->tick == 0 && s->run_tick == 0 && s->period_us == 1000000 / loop_rate_hz &&
-            s->current == MT_SCHED_IDLE;
-        loop invariant \forall integer j; 0 <= j < i ==> j < n ==>
-            s->st[j].interval == MtInterval(tasks + j, loop_rate_hz) && s->st[j].runs == 0 &&
-            s->st[j].last_run == 0 && s->st[j].slips == 0 && s->st[j].overruns == 0;
-        loop invariant \forall integer j; 0 <= j < i ==> s->st[j].interval >= 1;
+        loop invariant kept: MtTableKept{Pre, Here}(tasks, n);
+        loop invariant set: \forall integer j; 0 <= j < i ==> j < n ==>
+            s->st[j].interval == MtInterval{Pre}(tasks + j, loop_rate_hz);
+        loop invariant zero: \forall integer j; 0 <= j < i ==>
+            s->st[j].runs == 0 && s->st[j].last_run == 0 && s->st[j].slips == 0 &&
+            s->st[j].overruns == 0 && s->st[j].interval >= 1;
         loop assigns i, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1];
         loop variant MT_CFG_SCHED_MAX_TASKS - i;
     */
     for (i = 0u; i < MT_CFG_SCHED_MAX_TASKS; i++) {
-        mt_task_state_t *e = &s->st[i];
-        e->last_run = 0u;
-        e->interval = 1u;
-        if ((i < n) && (tasks[i].priority >= MT_SCHED_FAST_PRIO_LIMIT)) {
-            /* rate <= loop rate (validated), so the interval is >= 1 */
-            e->interval = (loop_rate_hz * 1000u) / tasks[i].rate_mhz;
+        uint32_t interval = 1u;
+        if (i < n) {
+            //@ assert ok_i: MtTaskOk{Pre}(tasks + i, loop_rate_hz);
+            interval = task_interval(&tasks[i], loop_rate_hz);
         }
-        e->min_us = 0u;
-        e->max_us = 0u;
-        e->overruns = 0u;
-        e->runs = 0u;
-        e->total_us = 0u;
-        e->slips = 0u;
-        e->not_achieved = 0u;
-        e->budget_skips = 0u;
+        state_init(&s->st[i], interval);
     }
-    s->extra_us = 0u;
-    s->clean_loops = 0u;
-    s->late_in_loop = 0u;
-    s->spare_us = 0u;
-    s->spare_ticks = 0u;
-    s->filtered_loop_q8 = s->period_us * 256u;
-    s->loops = 0u;
-    s->loop_total_us = 0u;
-    s->loop_min_us = 0u;
-    s->loop_max_us = 0u;
-    s->long_loops = 0u;
-    s->last_sample_us = 0u;
-    s->task_start_us = 0u;
-    s->task_allowed_us = 0u;
-    //@ assert tbl_end: MtTableOk(s->tasks, s->ntasks, s->loop_rate_hz);
-    /*@ assert st_end: \forall integer j; 0 <= j < s->ntasks ==>
-            s->st[j].interval == MtInterval(s->tasks + j, s->loop_rate_hz) &&
-            s->st[j].interval >= 1 && s->st[j].last_run <= s->run_tick && s->st[j].runs <= s->run_tick; */
-    //@ ghost sched_inv_intro(s);
+    //@ assert facts: MtInitFacts(s, tasks, n, loop_rate_hz);
+    init_table_fields(s, tasks, n, loop_rate_hz);
+    init_ticks(s, tasks, n, loop_rate_hz);
+    init_times(s, tasks, n, loop_rate_hz);
+    init_window(s, tasks, n, loop_rate_hz);
+    init_loop_stats(s, tasks, n, loop_rate_hz);
+    //@ ghost sched_inv_fresh(s, tasks, n, loop_rate_hz);
     return MT_OK;
 }
 
@@ -178,9 +325,9 @@ void mt_sched_tick(mt_sched_t *s)
 }
 
 /* Account a run of task i that took taken_us against allowed_us. */
-/*@ requires MtSchedInv(s);
-    requires i < s->ntasks;
-    requires s->st[i].runs < s->tick;
+/*@ requires valid: \valid(s);
+    requires index: i < MT_CFG_SCHED_MAX_TASKS;
+    requires room: s->st[i].runs < s->tick;
     assigns s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us,
             s->st[i].overruns, s->st[i].last_run;
     ensures s->st[i].runs == \old(s->st[i].runs) + 1;
@@ -206,9 +353,11 @@ static void note_run(mt_sched_t *s, uint32_t i, uint64_t taken_us, uint32_t allo
 }
 
 /* Run task i with allowance allowed_us; returns the time at which it ended. */
-/*@ requires MtSchedInv(s);
-    requires i < s->ntasks;
-    requires s->st[i].runs < s->tick;
+/*@ requires valid: \valid(s);
+    requires index: i < MT_CFG_SCHED_MAX_TASKS;
+    requires task: \valid_read(s->tasks + i) && s->tasks[i].fn != \null;
+    requires sep: s->ntasks <= MT_CFG_SCHED_MAX_TASKS && \separated(s, s->tasks + (0 .. s->ntasks - 1));
+    requires room: s->st[i].runs < s->tick;
     assigns s->current, s->task_start_us, s->task_allowed_us, MtPortNow,
             s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us,
             s->st[i].overruns, s->st[i].last_run;
@@ -216,6 +365,10 @@ static void note_run(mt_sched_t *s, uint32_t i, uint64_t taken_us, uint32_t allo
     ensures s->st[i].runs == \old(s->st[i].runs) + 1;
     ensures s->st[i].last_run == s->tick;
     ensures \result == MtPortNow && \result >= \old(MtPortNow);
+    ensures kept: MtSchedKept{Pre, Post}(s);
+    ensures others: \forall integer j; 0 <= j < MT_CFG_SCHED_MAX_TASKS ==> j != i ==>
+        s->st[j].runs == \old(s->st[j].runs) && s->st[j].last_run == \old(s->st[j].last_run);
+    ensures tick: s->tick == \old(s->tick) && s->run_tick == \old(s->run_tick);
 */
 static uint64_t run_task(mt_sched_t *s, uint32_t i, uint32_t allowed_us)
 {
@@ -235,12 +388,17 @@ static uint64_t run_task(mt_sched_t *s, uint32_t i, uint32_t allowed_us)
 
 /* Slip and lateness accounting for a normal task that runs dt ticks after its
  * last run (dt >= interval). */
-/*@ requires MtSchedInv(s);
-    requires i < s->ntasks;
-    requires dt >= s->st[i].interval;
+/*@ requires valid: \valid(s);
+    requires index: i < MT_CFG_SCHED_MAX_TASKS;
+    requires due: s->st[i].interval >= 1 && dt >= s->st[i].interval;
+    requires sep: s->ntasks <= MT_CFG_SCHED_MAX_TASKS && \separated(s, s->tasks + (0 .. s->ntasks - 1));
     assigns s->st[i].slips, s->st[i].not_achieved, s->late_in_loop;
     ensures s->st[i].slips == (\old(s->st[i].slips) + (dt / s->st[i].interval - 1) <= 0xFFFFFFFFFFFFFFFF ?
                                \old(s->st[i].slips) + (dt / s->st[i].interval - 1) : 0xFFFFFFFFFFFFFFFF);
+    ensures kept: MtSchedKept{Pre, Post}(s);
+    ensures others: \forall integer j; 0 <= j < MT_CFG_SCHED_MAX_TASKS ==> j != i ==>
+        s->st[j].runs == \old(s->st[j].runs) && s->st[j].last_run == \old(s->st[j].last_run);
+    ensures tick: s->tick == \old(s->tick) && s->run_tick == \old(s->run_tick);
 */
 static void note_release(mt_sched_t *s, uint32_t i, uint64_t dt)
 {
@@ -251,12 +409,88 @@ static void note_release(mt_sched_t *s, uint32_t i, uint64_t dt)
         /* releases in dt = floor(dt / interval); all but the one served now slipped */
         e->slips = sat_add_u64(e->slips, (dt / iv) - 1u);
     }
+    //@ assert one_release: dt < 2 * iv ==> dt / iv == 1;
     if (dt >= ((uint64_t)MT_SCHED_SLOWDOWN * iv)) {
         e->not_achieved = sat_add_u64(e->not_achieved, 1u);
         if (s->late_in_loop < U32_MAX_) {
             s->late_in_loop++;
         }
     }
+}
+
+/* A due task skipped because its budget does not fit: counted, stays due. */
+/*@ requires valid: \valid(s);
+    requires index: i < MT_CFG_SCHED_MAX_TASKS;
+    requires sep: s->ntasks <= MT_CFG_SCHED_MAX_TASKS && \separated(s, s->tasks + (0 .. s->ntasks - 1));
+    assigns s->st[i].budget_skips;
+    ensures counted: s->st[i].budget_skips == (\old(s->st[i].budget_skips) < 0xFFFFFFFFFFFFFFFF ?
+                                              \old(s->st[i].budget_skips) + 1 : 0xFFFFFFFFFFFFFFFF);
+    ensures kept: MtSchedKept{Pre, Post}(s);
+    ensures others: \forall integer j; 0 <= j < MT_CFG_SCHED_MAX_TASKS ==>
+        s->st[j].runs == \old(s->st[j].runs) && s->st[j].last_run == \old(s->st[j].last_run);
+*/
+static void note_skip(mt_sched_t *s, uint32_t i)
+{
+    s->st[i].budget_skips = sat_add_u64(s->st[i].budget_skips, 1u);
+}
+
+/* One step of the scan: task i runs if it is fast, or due and its budget fits the time left
+ * (avail); returns the time left after it, measured from start (S-9). */
+/*@ requires inv: MtSchedInv(s) && s->run_tick == s->tick;
+    requires index: i < s->ntasks;
+    requires fresh: s->st[i].runs < s->tick;
+    requires left: avail <= time_available_us;
+    requires start: start <= MtPortNow;
+    assigns s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us, s->st[i].overruns,
+            s->st[i].last_run, s->st[i].slips, s->st[i].not_achieved, s->st[i].budget_skips,
+            s->current, s->late_in_loop, s->task_start_us, s->task_allowed_us, MtPortNow;
+    ensures inv: MtSchedInv(s) && s->run_tick == s->tick;
+    ensures kept: MtSchedKept{Pre, Post}(s);
+    ensures tick: s->tick == \old(s->tick);
+    ensures time: MtPortNow >= \old(MtPortNow);
+    ensures others: \forall integer j; 0 <= j < MT_CFG_SCHED_MAX_TASKS ==> j != i ==>
+        s->st[j].runs == \old(s->st[j].runs) && s->st[j].last_run == \old(s->st[j].last_run);
+    ensures once: (s->st[i].runs == \old(s->st[i].runs) && s->st[i].last_run == \old(s->st[i].last_run)) ||
+                  (s->st[i].runs == \old(s->st[i].runs) + 1 && s->st[i].last_run == s->tick);
+    ensures fast: \old(MtTaskFast(s->tasks + i)) ==> s->st[i].runs == \old(s->st[i].runs) + 1;
+    ensures not_due: !\old(MtTaskFast(s->tasks + i)) ==>
+        \old(s->tick - s->st[i].last_run < s->st[i].interval) ==> s->st[i].runs == \old(s->st[i].runs);
+    ensures budget: !\old(MtTaskFast(s->tasks + i)) ==> \old(s->tasks[i].budget_us) > avail ==>
+        s->st[i].runs == \old(s->st[i].runs);
+    ensures left: \result <= time_available_us;
+    ensures crumb: s->current == \old(s->current) || s->current == MT_SCHED_IDLE;
+*/
+static uint32_t run_step(mt_sched_t *s, uint32_t i, uint32_t time_available_us, uint64_t start,
+                         uint32_t avail)
+{
+    const mt_task_t *t = &s->tasks[i];
+    uint32_t allowed;
+    uint64_t end;
+
+    if (t->priority < MT_SCHED_FAST_PRIO_LIMIT) {
+        /* fast task: every tick, whatever is left */
+        allowed = (t->budget_us != 0u) ? t->budget_us : s->period_us;
+    } else {
+        uint64_t dt = s->tick - s->st[i].last_run;
+        if (dt < s->st[i].interval) {
+            return avail; /* not due */
+        }
+        if (t->budget_us > avail) {
+            /* due but does not fit: skipped, stays due, scan goes on */
+            note_skip(s, i);
+            //@ assert kept_skip: MtSchedKept{Pre, Here}(s);
+            //@ ghost sched_inv_intro(s);
+            return avail;
+        }
+        note_release(s, i, dt);
+        allowed = t->budget_us;
+    }
+    end = run_task(s, i, allowed);
+    //@ assert kept_run: MtSchedKept{Pre, Here}(s);
+    //@ ghost sched_inv_intro(s);
+    /* S-9: the budget shrinks by the wall time since the scan started, so time between tasks
+     * and pre-emption by other threads count too */
+    return ((end - start) >= time_available_us) ? 0u : (time_available_us - (uint32_t)(end - start));
 }
 
 uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us)
@@ -270,55 +504,31 @@ uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us)
     }
     s->run_tick = s->tick;
     start = mt_port_now_us();
-    /*@ loop invariant 0 <= i <= s->ntasks;
-        loop invariant MtSchedInv(s) && s->run_tick == s->tick;
+    /*@ loop invariant range: 0 <= i <= \at(s->ntasks, Pre);
+        loop invariant kept: MtSchedKept{Pre, Here}(s);
+        loop invariant inv: MtSchedInv(s) && s->run_tick == s->tick && s->tick == \at(s->tick, Pre);
         loop invariant avail <= time_available_us;
         loop invariant crumb: s->current == \at(s->current, Pre) || s->current == MT_SCHED_IDLE;
         loop invariant start <= MtPortNow;
         loop invariant new_tick: \at(s->run_tick, Pre) < s->tick;
-        loop invariant intervals: \forall integer j; 0 <= j < s->ntasks ==>
-            s->st[j].interval == \at(s->st[j].interval, Pre);
-        loop invariant todo: \forall integer j; i <= j < s->ntasks ==>
+        loop invariant todo: \forall integer j; i <= j < MT_CFG_SCHED_MAX_TASKS ==>
             s->st[j].runs == \at(s->st[j].runs, Pre) && s->st[j].last_run == \at(s->st[j].last_run, Pre);
         loop invariant done: \forall integer j; 0 <= j < i ==>
             (s->st[j].runs == \at(s->st[j].runs, Pre) && s->st[j].last_run == \at(s->st[j].last_run, Pre)) ||
             (s->st[j].runs == \at(s->st[j].runs, Pre) + 1 && s->st[j].last_run == s->tick);
-        loop invariant fast: \forall integer j; 0 <= j < i ==> MtTaskFast(s->tasks + j) ==>
+        loop invariant fast: \forall integer j; 0 <= j < i ==> \at(MtTaskFast(s->tasks + j), Pre) ==>
             s->st[j].runs == \at(s->st[j].runs, Pre) + 1;
-        loop invariant not_due: \forall integer j; 0 <= j < i ==> !MtTaskFast(s->tasks + j) ==>
-            s->tick - \at(s->st[j].last_run, Pre) < s->st[j].interval ==> s->st[j].runs == \at(s->st[j].runs, Pre);
-        loop invariant budget: \forall integer j; 0 <= j < i ==> !MtTaskFast(s->tasks + j) ==>
-            s->tasks[j].budget_us > time_available_us ==> s->st[j].runs == \at(s->st[j].runs, Pre);
+        loop invariant not_due: \forall integer j; 0 <= j < i ==> !\at(MtTaskFast(s->tasks + j), Pre) ==>
+            \at(s->tick - s->st[j].last_run < s->st[j].interval, Pre) ==>
+            s->st[j].runs == \at(s->st[j].runs, Pre);
+        loop invariant budget: \forall integer j; 0 <= j < i ==> !\at(MtTaskFast(s->tasks + j), Pre) ==>
+            \at(s->tasks[j].budget_us, Pre) > time_available_us ==> s->st[j].runs == \at(s->st[j].runs, Pre);
         loop assigns i, avail, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop,
                      s->task_start_us, s->task_allowed_us, MtPortNow;
-        loop variant s->ntasks - i;
+        loop variant \at(s->ntasks, Pre) - i;
     */
     for (i = 0u; i < s->ntasks; i++) {
-        const mt_task_t *t = &s->tasks[i];
-        uint32_t allowed;
-        uint64_t end;
-
-        if (t->priority < MT_SCHED_FAST_PRIO_LIMIT) {
-            /* fast task: every tick, whatever is left */
-            allowed = (t->budget_us != 0u) ? t->budget_us : s->period_us;
-        } else {
-            uint64_t dt = s->tick - s->st[i].last_run;
-            if (dt < s->st[i].interval) {
-                continue; /* not due */
-            }
-            if (t->budget_us > avail) {
-                /* due but does not fit: skipped, stays due, scan goes on */
-                s->st[i].budget_skips = sat_add_u64(s->st[i].budget_skips, 1u);
-                continue;
-            }
-            note_release(s, i, dt);
-            allowed = t->budget_us;
-        }
-        end = run_task(s, i, allowed);
-        /* S-9: the budget shrinks by the wall time since the scan started, so
-         * time between tasks and pre-emption by other threads count too */
-        avail = ((end - start) >= time_available_us) ? 0u
-                                                     : (time_available_us - (uint32_t)(end - start));
+        avail = run_step(s, i, time_available_us, start, avail);
     }
     return avail;
 }
@@ -349,6 +559,8 @@ void mt_sched_end_loop(mt_sched_t *s, uint32_t spare_us)
         s->clean_loops = 0u;
     }
     s->late_in_loop = 0u;
+    //@ assert kept: MtSchedKept{Pre, Here}(s);
+    //@ ghost sched_inv_intro(s);
 }
 
 void mt_sched_note_sample(mt_sched_t *s, uint64_t sample_us)
@@ -377,6 +589,8 @@ void mt_sched_note_sample(mt_sched_t *s, uint64_t sample_us)
         s->loops = sat_add_u64(s->loops, 1u);
     }
     s->last_sample_us = sample_us;
+    //@ assert kept: MtSchedKept{Pre, Here}(s);
+    //@ ghost sched_inv_intro(s);
 }
 
 void mt_sched_loop_once(mt_sched_t *s, mt_sample_wait_fn_t wait, void *ctx)
@@ -450,6 +664,9 @@ void mt_sched_task_report(const mt_sched_t *s, uint32_t i, mt_task_report_t *r)
 
 void mt_sched_loop_report(const mt_sched_t *s, mt_loop_report_t *r)
 {
+    /* first, while *r is untouched: the load needs the invariant of *s */
+    uint32_t load = mt_sched_load_permille(s);
+
     r->ticks = s->tick;
     r->loops = s->loops;
     r->min_us = s->loop_min_us;
@@ -458,7 +675,39 @@ void mt_sched_loop_report(const mt_sched_t *s, mt_loop_report_t *r)
     r->long_loops = s->long_loops;
     r->extra_us = s->extra_us;
     r->filtered_us = s->filtered_loop_q8 / 256u;
-    r->load_permille = mt_sched_load_permille(s);
+    r->load_permille = load;
+}
+
+/* Zero the statistics of task i (not its due state). */
+/*@ requires valid: \valid(s);
+    requires index: i < MT_CFG_SCHED_MAX_TASKS;
+    requires sep: s->ntasks <= MT_CFG_SCHED_MAX_TASKS && \separated(s, s->tasks + (0 .. s->ntasks - 1));
+    assigns s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us, s->st[i].overruns, s->st[i].slips, s->st[i].not_achieved, s->st[i].budget_skips;
+    ensures zero: s->st[i].runs == 0 && s->st[i].min_us == 0 && s->st[i].max_us == 0 && s->st[i].total_us == 0 && s->st[i].overruns == 0 && s->st[i].slips == 0 && s->st[i].not_achieved == 0 && s->st[i].budget_skips == 0;
+    ensures kept: MtSchedKept{Pre, Post}(s);
+    ensures due: s->st[i].interval == \old(s->st[i].interval) && s->st[i].last_run == \old(s->st[i].last_run);
+    ensures others: \forall integer j; 0 <= j < MT_CFG_SCHED_MAX_TASKS ==> j != i ==>
+        s->st[j].runs == \old(s->st[j].runs) &&
+        s->st[j].min_us == \old(s->st[j].min_us) &&
+        s->st[j].max_us == \old(s->st[j].max_us) &&
+        s->st[j].total_us == \old(s->st[j].total_us) &&
+        s->st[j].overruns == \old(s->st[j].overruns) &&
+        s->st[j].slips == \old(s->st[j].slips) &&
+        s->st[j].not_achieved == \old(s->st[j].not_achieved) &&
+        s->st[j].budget_skips == \old(s->st[j].budget_skips) &&
+        s->st[j].interval == \old(s->st[j].interval) &&
+        s->st[j].last_run == \old(s->st[j].last_run);
+*/
+static void stats_zero(mt_sched_t *s, uint32_t i)
+{
+    s->st[i].runs = 0u;
+    s->st[i].min_us = 0u;
+    s->st[i].max_us = 0u;
+    s->st[i].total_us = 0u;
+    s->st[i].overruns = 0u;
+    s->st[i].slips = 0u;
+    s->st[i].not_achieved = 0u;
+    s->st[i].budget_skips = 0u;
 }
 
 void mt_sched_reset_stats(mt_sched_t *s)
@@ -466,27 +715,24 @@ void mt_sched_reset_stats(mt_sched_t *s)
     uint32_t i;
 
     /*@ loop invariant 0 <= i <= MT_CFG_SCHED_MAX_TASKS;
-        loop invariant \forall integer j; 0 <= j < i ==> s->st[j].runs == 0 && s->st[j].slips == 0;
-        loop assigns i, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].runs, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].min_us,
-                     s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].max_us, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].total_us,
-                     s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].overruns, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].slips,
-                     s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].not_achieved,
-                     s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1].budget_skips;
+        loop invariant kept: MtSchedKept{Pre, Here}(s);
+        loop invariant zeroed: \forall integer j; 0 <= j < i ==>
+            s->st[j].runs == 0 && s->st[j].min_us == 0 && s->st[j].max_us == 0 && s->st[j].total_us == 0 &&
+            s->st[j].overruns == 0 && s->st[j].slips == 0 && s->st[j].not_achieved == 0 &&
+            s->st[j].budget_skips == 0;
+        loop invariant due_kept: \forall integer j; 0 <= j < MT_CFG_SCHED_MAX_TASKS ==>
+            s->st[j].interval == \at(s->st[j].interval, Pre) && s->st[j].last_run == \at(s->st[j].last_run, Pre);
+        loop assigns i, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1];
         loop variant MT_CFG_SCHED_MAX_TASKS - i;
     */
     for (i = 0u; i < MT_CFG_SCHED_MAX_TASKS; i++) {
-        s->st[i].runs = 0u;
-        s->st[i].min_us = 0u;
-        s->st[i].max_us = 0u;
-        s->st[i].total_us = 0u;
-        s->st[i].overruns = 0u;
-        s->st[i].slips = 0u;
-        s->st[i].not_achieved = 0u;
-        s->st[i].budget_skips = 0u;
+        stats_zero(s, i);
     }
     s->loops = 0u;
     s->loop_total_us = 0u;
     s->loop_min_us = 0u;
     s->loop_max_us = 0u;
     s->long_loops = 0u;
+    //@ assert kept: MtSchedKept{Pre, Here}(s);
+    //@ ghost sched_inv_intro(s);
 }
