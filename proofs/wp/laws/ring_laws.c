@@ -37,16 +37,17 @@ uint8_t law_bring_write_then_read(mt_bring_t *r, uint8_t v)
     return out;
 }
 
-/* FIFO order: two bytes come out in the order they went in. */
+/* FIFO order: two bytes come out in the order they went in (the result packs the bytes read,
+ * first one in the high byte). */
 /*@ requires inv: MtBRingInv(r);
     requires room: MtBRingCount(r) == 0 && r->reserved == 0 && r->cap >= 2;
-    requires out: \valid(out + (0 .. 1)) && \separated(out + (0 .. 1), r, r->buf + (0 .. r->cap - 1));
-    assigns r->tail, r->head, r->head_cache, r->tail_cache, r->buf[0 .. r->cap - 1], out[0 .. 1];
-    ensures fifo: out[0] == a && out[1] == b;
+    assigns r->tail, r->head, r->head_cache, r->tail_cache, r->buf[0 .. r->cap - 1];
+    ensures fifo: \result == a * 256 + b;
 */
-void law_bring_fifo_order(mt_bring_t *r, uint8_t a, uint8_t b, uint8_t out[2])
+uint32_t law_bring_fifo_order(mt_bring_t *r, uint8_t a, uint8_t b)
 {
     uint8_t in[2];
+    uint8_t out[2] = {0u, 0u};
     uint32_t w;
     uint32_t n;
 
@@ -55,6 +56,8 @@ void law_bring_fifo_order(mt_bring_t *r, uint8_t a, uint8_t b, uint8_t out[2])
     w = mt_bring_write(r, in, 2u);
     n = mt_bring_read(r, out, 2u);
     //@ assert two_each: w == 2 && n == 2;
+    //@ assert in_order: out[0] == a && out[1] == b;
+    return ((uint32_t)out[0] * 256u) + (uint32_t)out[1];
 }
 
 /* No overwrite: a write into a full ring writes nothing and changes no unread byte. */
