@@ -397,47 +397,47 @@ def arm_phase(build):
 
 # ---------------------------------------------------------------- proofs
 def proof_phase(build):
+    """Wall times of the last `make prove` (tools/prove.sh writes build/proof/timing.json,
+    one entry per part) and of each WP module (build/proof/wp/<module>/time.txt)."""
     found = {}
-    summ = os.path.join(ROOT, build, "proof", "wp", "summary.json")
-    if os.path.isfile(summ):
+    proof = os.path.join(ROOT, build, "proof")
+    timing = os.path.join(proof, "timing.json")
+    if os.path.isfile(timing):
         try:
-            with open(summ) as f:
-                data = json.load(f)
-            found["wp/summary.json"] = data
+            with open(timing) as f:
+                found["parts"] = {k: float(v) for k, v in json.load(f).items()}
         except (OSError, ValueError) as e:
-            found["wp/summary.json"] = {"error": str(e)}
-    for t in sorted(glob.glob(os.path.join(ROOT, build, "proof", "*", "timing"))):
+            found["error"] = str(e)
+    kind = os.path.join(proof, "cache.txt")
+    if os.path.isfile(kind):
+        with open(kind) as f:
+            found["cache"] = f.read().strip()
+    modules = {}
+    for t in sorted(glob.glob(os.path.join(proof, "wp", "*", "time.txt"))):
         try:
             with open(t) as f:
-                found[os.path.relpath(t, os.path.join(ROOT, build, "proof"))] = f.read().strip()[:400]
-        except OSError:
+                modules[os.path.basename(os.path.dirname(t))] = float(f.read().strip())
+        except (OSError, ValueError):
             pass
+    if modules:
+        found["wp_modules"] = modules
     return found
 
 
 def proof_times(found):
-    """Short text for the table: wall times found in the proof outputs."""
-    if not found:
+    """Short text for the table: the wall time of each proof part, and the slowest WP module."""
+    if not found or "parts" not in found:
         return None
-    bits = []
-    for k, v in found.items():
-        if isinstance(v, dict):
-            times = []
-
-            def walk(d, path):
-                if isinstance(d, dict):
-                    for kk, vv in d.items():
-                        walk(vv, path + [str(kk)])
-                elif isinstance(d, (int, float)) and re.search(r"wall|time|seconds|elapsed|_s$", path[-1], re.I):
-                    times.append((".".join(path), d))
-            walk(v, [])
-            if times:
-                bits.append(f"{k}: " + ", ".join(f"{p}={x}" for p, x in times[:4]))
-            else:
-                bits.append(f"{k}: present (no wall-time field found)")
-        else:
-            bits.append(f"{k}: {v.splitlines()[0] if v else '(empty)'}")
-    return "; ".join(bits)
+    parts = found["parts"]
+    text = ", ".join(f"{k} {v:.0f} s" for k, v in parts.items())
+    text += f"; total {sum(parts.values()):.0f} s"
+    if found.get("cache"):
+        text += f" ({found['cache']} WP cache)"
+    mods = found.get("wp_modules") or {}
+    if mods:
+        slow = max(mods, key=mods.get)
+        text += f" (slowest WP module: {slow} {mods[slow]:.0f} s)"
+    return text
 
 
 # ------------------------------------------------------------------ table
@@ -664,7 +664,7 @@ def build_report(info, cg, wc, arm, proofs, elapsed_cg, elapsed_wc):
     # ---- proofs
     ptxt = proof_times(proofs)
     row("PROOF", "proof-suite wall time", ptxt if ptxt else "not measured in this run", "", "", "",
-        "build/proof/wp/summary.json, build/proof/*/timing")
+        "last make prove: build/proof/timing.json, build/proof/wp/*/time.txt")
     return rows, targets, J
 
 

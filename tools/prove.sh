@@ -19,6 +19,10 @@ mkdir -p "$OUT"
 tools/bootstrap.sh prove | tee "$OUT/versions.txt"
 [ "${PIPESTATUS[0]}" -eq 0 ] || { echo "prove: tool installation failed"; exit 1; }
 
+# Cold run (no WP session/cache from an earlier run) or warm (incremental) run: recorded
+# beside the timings, so `make bench` can say which one its proof row shows.
+if compgen -G "$OUT/wp/*/session" >/dev/null; then echo warm >"$OUT/cache.txt"; else echo cold >"$OUT/cache.txt"; fi
+
 declare -A secs=()
 # CBMC joins when its harness farm is in the tree (proofs/cbmc/cbmc.mk).
 default_parts="wp tla"

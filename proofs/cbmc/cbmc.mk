@@ -1,0 +1,43 @@
+# SPDX-License-Identifier: Apache-2.0
+# proofs/cbmc/cbmc.mk -- CBMC gates, included by proofs/proofs.mk (paths relative to the root).
+#
+#   make cbmc            every proof in proofs/cbmc/proofs/ (2 at a time): property run with all
+#                        check flags + coverage run; fails if a property fails, a harness
+#                        covers < 90 % of the kernel code it reaches, or a reachability
+#                        witness (MTC_REACH) is not reached. Writes build/proof/cbmc/summary.json.
+#   make cbmc-<fn>       one proof (same judgement), e.g. make cbmc-mt_bring_write
+#   make cbmc-max        the capacity-maximum tier (ring capacities 2^30 - 1 and 2^30, 31-bit
+#                        indices): slow, run nightly; build/proof/cbmc/summary-max.json
+#   make cbmc-gen        only translate the ACSL contracts (build/proof/cbmc/gen/)
+#   make cbmc-test       the translator's tests (tools/test_acsl2cbmc.sh): sample contract,
+#                        unsupported constructs, and a mutated ensures caught by CBMC and WP
+#   make cbmc-clean
+#
+# The contracts come from the ACSL annotations only (tools/acsl2cbmc.py); see
+# proofs/cbmc/README.md and proofs/cbmc/ASSUMPTIONS.md.
+
+CBMC_JOBS ?= 2
+CBMC_PROOF_NAMES := $(notdir $(patsubst %/cbmc-proof.txt,%,$(wildcard proofs/cbmc/proofs/*/cbmc-proof.txt)))
+
+.PHONY: cbmc cbmc-max cbmc-gen cbmc-test cbmc-clean cbmc-deps $(addprefix cbmc-,$(CBMC_PROOF_NAMES))
+
+cbmc-deps:
+	@[ -x .tools/bin/cbmc ] && [ -x .tools/bin/goto-cc ] || tools/bootstrap.sh prove
+
+cbmc: cbmc-deps
+	@python3 proofs/cbmc/run.py -j $(CBMC_JOBS)
+
+cbmc-max: cbmc-deps
+	@python3 proofs/cbmc/run.py -j $(CBMC_JOBS) --max
+
+$(addprefix cbmc-,$(CBMC_PROOF_NAMES)): cbmc-%: cbmc-deps
+	@python3 proofs/cbmc/run.py --summary $(BUILD)/proof/cbmc/summary-$*.json $*
+
+cbmc-gen:
+	@python3 tools/acsl2cbmc.py
+
+cbmc-test: cbmc-deps
+	@tools/test_acsl2cbmc.sh
+
+cbmc-clean:
+	rm -rf $(BUILD)/proof/cbmc

@@ -1,0 +1,25 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file ghost.c
+ * @brief The ghost variables of kernel/spec/mt_spec.h as real C globals in the CBMC build,
+ *        maintained by the port stubs (generated mtc_stubs.c), and their pre-call copies.
+ */
+#include "mtc_logic.h"
+
+int MtLocked;
+unsigned long long MtPortNow;
+int mtc_old_MtLocked;
+unsigned long long mtc_old_MtPortNow;
+
+/* Any lock state and any time: the function's requires then selects the legal ones. */
+void mtc_ghosts_nondet(void)
+{
+    MtLocked = (int)mtc_nondet_i32();
+    MtPortNow = mtc_nondet_u64();
+}
+
+void mtc_snapshot_ghosts(void)
+{
+    mtc_old_MtLocked = MtLocked;
+    mtc_old_MtPortNow = MtPortNow;
+}

@@ -1,0 +1,140 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file mtc.h
+ * @brief Support for the CBMC harnesses: nondeterministic values, the snapshot registry
+ *        that gives the generated contracts their pre-state (\old), and the location
+ *        helpers used by \separated and assigns. See proofs/cbmc/README.md.
+ *
+ * Every object a harness hands to the kernel is allocated with mtc_alloc() (directly or by a
+ * constructor in mtc_objects.h); mtc_snapshot() then copies all of them (buffers included:
+ * they are objects of their own) and the ghost variables. The generated mtc_post_<F>() reads
+ * the pre-state through MTC_OLD() and walks every registered object for the assigns check.
+ */
+#ifndef MTC_H
+#define MTC_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+/* Largest number of objects one harness registers (the generated frame check visits each). */
+#define MTC_MAX_OBJS 6
+
+typedef struct {
+    void *orig;               /* the object the kernel sees */
+    void *copy;               /* its copy at mtc_snapshot() */
+    __CPROVER_size_t size;    /* bytes */
+    __CPROVER_size_t count;   /* elements */
+    int kind;                 /* MTC_K_* (generated in mtc_logic.h) */
+} mtc_obj_t;
+
+extern mtc_obj_t mtc_objs[MTC_MAX_OBJS];
+extern int mtc_nobjs;
+extern int mtc_snapshot_taken;
+
+/* nondeterministic values */
+uint8_t mtc_nondet_u8(void);
+uint32_t mtc_nondet_u32(void);
+uint64_t mtc_nondet_u64(void);
+int32_t mtc_nondet_i32(void);
+bool mtc_nondet_bool(void);
+__CPROVER_size_t mtc_nondet_size(void);
+__int128 mtc_nondet_i128(void);
+
+/* A fresh object of count elements of elem_size bytes with nondeterministic contents,
+ * registered for the snapshot (kind: MTC_K_BYTES or MTC_K_<type>). */
+void *mtc_alloc(__CPROVER_size_t elem_size, __CPROVER_size_t count, int kind);
+#define MTC_NEW(T, n) ((T *)mtc_alloc(sizeof(T), (n), MTC_K_##T))
+
+/* Copy every registered object and the ghost variables (call after assuming the pre). */
+void mtc_snapshot(void);
+
+/* ghost.c: nondeterministic ghost state, and its copy taken by mtc_snapshot(). */
+void mtc_ghosts_nondet(void);
+void mtc_snapshot_ghosts(void);
+
+/* Address in the snapshot of the byte that p points to now (p must point into a registered
+ * object; anything else is reported as a failed assertion, never silently read live). */
+void *mtc_old_ptr(const void *p);
+#define MTC_OLD(p) ((__typeof__(p))mtc_old_ptr((const void *)(p)))
+#define MTC_AT(st, p) ((st) ? MTC_OLD(p) : (p))
+/* Value of the lvalue x in the snapshot (for harness witnesses). */
+#define MTC_OLDV(x) (*MTC_OLD(&(x)))
+
+/* Is the cell [a, a + n) inside an assigns location? Three shapes, chosen by the generator:
+ * one object of `width` bytes at base; count contiguous elements of `width` bytes from base;
+ * count elements `stride` bytes apart, of which the first `width` bytes are assigned (a
+ * field of each element of an array of structs). 64-bit arithmetic: object offsets and
+ * sizes are below 2^62 in every harness. */
+static inline long long mtc_rel(const void *a, const void *base)
+{
+    return (long long)__CPROVER_POINTER_OFFSET(a) - (long long)__CPROVER_POINTER_OFFSET(base);
+}
+
+static inline int mtc_in_one(const void *a, __CPROVER_size_t n, const void *base,
+                             __CPROVER_size_t width)
+{
+    long long rel;
+    if (!__CPROVER_same_object(a, base)) {
+        return 0;
+    }
+    rel = mtc_rel(a, base);
+    return rel >= 0 && rel + (long long)n <= (long long)width;
+}
+
+static inline int mtc_in_range(const void *a, __CPROVER_size_t n, const void *base, __int128 count,
+                               __CPROVER_size_t width)
+{
+    long long rel;
+    if (count <= 0 || !__CPROVER_same_object(a, base)) {
+        return 0;
+    }
+    rel = mtc_rel(a, base);
+    return rel >= 0 && (__int128)rel + (__int128)n <= count * (__int128)width;
+}
+
+static inline int mtc_in_strided(const void *a, __CPROVER_size_t n, const void *base,
+                                 __CPROVER_size_t stride, __int128 count, __CPROVER_size_t width)
+{
+    long long rel;
+    if (count <= 0 || !__CPROVER_same_object(a, base)) {
+        return 0;
+    }
+    rel = mtc_rel(a, base);
+    return rel >= 0 && (__int128)(rel / (long long)stride) < count &&
+           rel % (long long)stride + (long long)n <= (long long)width;
+}
+
+/* \separated of two locations p + (lo .. hi), elements of esz bytes (byte ranges). */
+static inline int mtc_separated(const void *p, __int128 plo, __int128 phi, __int128 pesz,
+                                const void *q, __int128 qlo, __int128 qhi, __int128 qesz)
+{
+    __int128 ps;
+    __int128 qs;
+    if (plo > phi || qlo > qhi || !__CPROVER_same_object(p, q)) {
+        return 1;
+    }
+    ps = (__int128)__CPROVER_POINTER_OFFSET(p) + plo * pesz;
+    qs = (__int128)__CPROVER_POINTER_OFFSET(q) + qlo * qesz;
+    return ps + (phi - plo + 1) * pesz <= qs || qs + (qhi - qlo + 1) * qesz <= ps;
+}
+
+static inline __int128 mtc_min(__int128 a, __int128 b)
+{
+    return a < b ? a : b;
+}
+
+static inline __int128 mtc_max(__int128 a, __int128 b)
+{
+    return a > b ? a : b;
+}
+
+/* Reachability witness: the block is a coverage goal of the harness, covered only if the
+ * harness admits a state with cond (e.g. a capacity at its maximum). The coverage report
+ * (proofs/cbmc/run.py) lists each MTC_REACH line as reached or not. */
+extern int mtc_reached;
+#define MTC_REACH(cond)                                                                         \
+    if (cond) {                                                                                 \
+        mtc_reached = __LINE__;                                                                 \
+    }
+
+#endif /* MTC_H */

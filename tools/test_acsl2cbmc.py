@@ -1,0 +1,375 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""Tests of tools/acsl2cbmc.py (run by tools/test_acsl2cbmc.sh, `make cbmc-test`).
+
+1. A small sample contract (predicate, logic function, \\exists, \\forall, \\old, \\valid,
+   \\separated, behaviours, assigns with a range) is translated; the generated C is checked
+   for the expected pieces, and CBMC proves the sample function against it.
+2. Mutations of the sample are caught under the clause's own label: a mutated ensures
+   (`+ 1` -> `+ 2`), and an implementation writing a location outside the assigns clause.
+3. Unsupported ACSL makes the translator fail loudly (exit 2, the construct named).
+4. The kernel: a copy of kernel/ with one ensures clause mutated (mt_bring_commit, behaviour
+   ok: `\\result == MT_OK` -> `\\result == MT_E_FULL`) is rejected by CBMC (assertion
+   "mt_bring_commit: ensures ok.status") and by Frama-C/WP (goal
+   mt_bring_commit_ok_ensures_status not proved), while the unmutated copy passes both.
+   Skipped (with a message) when frama-c is not installed; SKIP_WP=1 skips the WP half.
+
+Everything runs on copies under build/proof/cbmc/test/; kernel/ is never modified.
+"""
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+TOOL = os.path.join(HERE, "acsl2cbmc.py")
+WORK = os.path.join(ROOT, "build", "proof", "cbmc", "test")
+BIN = os.path.join(ROOT, ".tools", "bin")
+LIB = os.path.join(ROOT, "proofs", "cbmc", "lib")
+CHECKS = ["--bounds-check", "--pointer-check", "--pointer-primitive-check",
+          "--pointer-overflow-check", "--signed-overflow-check", "--unsigned-overflow-check",
+          "--conversion-check", "--div-by-zero-check", "--undefined-shift-check",
+          "--unwinding-assertions", "--no-malloc-may-fail"]
+
+SAMPLE_H = r"""
+#include <stdint.h>
+#include <stdbool.h>
+
+#define MT_COUNTER_CAP_MAX 1000u
+
+typedef struct {
+    uint32_t n;       /* items stored */
+    uint32_t hits;    /* not written by push */
+    uint8_t *buf;
+    uint32_t cap;
+} mt_counter_t;
+
+/*@ predicate MtCounterInv(mt_counter_t *c) =
+        \valid(c) && 1 <= c->cap <= MT_COUNTER_CAP_MAX && c->n <= c->cap &&
+        \valid(c->buf + (0 .. c->cap - 1)) && \separated(c, c->buf + (0 .. c->cap - 1));
+
+    logic integer MtCounterRoom(mt_counter_t *c) = c->cap - c->n;
+
+    predicate MtCounterHas(mt_counter_t *c, integer v) =
+        \exists integer i; 0 <= i < c->n && c->buf[i] == v;
+*/
+
+/*@ requires inv: MtCounterInv(c);
+    assigns c->n, c->buf[0 .. c->cap - 1];
+    ensures inv: MtCounterInv(c);
+    ensures kept: \forall integer i; 0 <= i < \old(c->n) ==> c->buf[i] == \old(c->buf[i]);
+    behavior room:
+      assumes MtCounterRoom(c) > 0;
+      ensures status: \result == 0;
+      ensures grown: c->n == \old(c->n) + 1;
+      ensures stored: c->buf[\old(c->n)] == v && MtCounterHas(c, v);
+    behavior full:
+      assumes MtCounterRoom(c) == 0;
+      ensures status: \result == 2;
+      ensures same: c->n == \old(c->n);
+    complete behaviors;
+    disjoint behaviors;
+*/
+int mt_counter_push(mt_counter_t *c, uint8_t v);
+"""
+
+SAMPLE_C = r"""
+#include "mt_counter.h"
+
+int mt_counter_push(mt_counter_t *c, uint8_t v)
+{
+    if (c->n >= c->cap) {
+        return 2;
+    }
+    c->buf[c->n] = v;
+    c->n++;
+    return 0;
+}
+"""
+
+SAMPLE_HARNESS = r"""
+#include "mtc_logic.h"
+#include "mt_counter_push_contract.h"
+
+void harness(void)
+{
+    mt_counter_t *c = (mt_counter_t *)mtc_alloc(sizeof(mt_counter_t), 1u, MTC_K_mt_counter_t);
+    __CPROVER_assume(c->cap >= 1u && c->cap <= MT_COUNTER_CAP_MAX);
+    c->buf = (uint8_t *)mtc_alloc(1u, c->cap, MTC_K_BYTES);
+    uint8_t v = mtc_nondet_u8();
+    __CPROVER_assume(mtc_pre_mt_counter_push(c, v));
+    mtc_snapshot();
+    int res = mt_counter_push(c, v);
+    mtc_post_mt_counter_push(c, v, res);
+}
+"""
+
+
+def translate(inputs, incs, out):
+    cmd = [sys.executable, TOOL, "--out", out]
+    for f in inputs:
+        cmd += ["--input", f]
+    for d in incs:
+        cmd += ["-I", d]
+    return subprocess.run(cmd, capture_output=True, text=True)
+
+
+def cbmc_failures(goto_srcs, incs, workdir, extra=()):
+    """Compile and run CBMC; returns (failed property descriptions, total properties)."""
+    gb = os.path.join(workdir, "h.goto")
+    cc = subprocess.run([os.path.join(BIN, "goto-cc"), "-DCBMC", "--function", "harness", "-o", gb]
+                        + [f"-I{d}" for d in incs] + goto_srcs, capture_output=True, text=True)
+    if cc.returncode != 0:
+        raise AssertionError("goto-cc failed:\n" + cc.stdout + cc.stderr)
+    r = subprocess.run([os.path.join(BIN, "cbmc"), gb, "--unwind", "3", "--json-ui", *CHECKS,
+                        *extra], capture_output=True, text=True)
+    if r.returncode not in (0, 10):
+        raise AssertionError("cbmc failed:\n" + r.stderr[-3000:])
+    failed, total = [], 0
+    for m in json.loads(r.stdout):
+        for x in m.get("result", []):
+            total += 1
+            if x["status"] != "SUCCESS":
+                failed.append(x["description"])
+    return failed, total
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+class Sample(unittest.TestCase):
+    """The translator on a self-contained sample contract."""
+
+    def setUp(self):
+        self.dir = os.path.join(WORK, "sample", self.id().split(".")[-1])
+        shutil.rmtree(self.dir, ignore_errors=True)
+        self.src = os.path.join(self.dir, "src")
+        self.out = os.path.join(self.dir, "gen")
+        write(os.path.join(self.src, "mt_counter.h"), SAMPLE_H)
+        write(os.path.join(self.src, "mt_counter.c"), SAMPLE_C)
+        write(os.path.join(self.dir, "harness.c"), SAMPLE_HARNESS)
+
+    def run_sample(self, header=SAMPLE_H, impl=SAMPLE_C):
+        write(os.path.join(self.src, "mt_counter.h"), header)
+        write(os.path.join(self.src, "mt_counter.c"), impl)
+        t = translate([os.path.join(self.src, "mt_counter.h")], [self.src], self.out)
+        self.assertEqual(t.returncode, 0, t.stderr)
+        srcs = [os.path.join(self.dir, "harness.c"), os.path.join(self.src, "mt_counter.c"),
+                os.path.join(LIB, "mtc.c"), os.path.join(LIB, "ghost.c")]
+        return cbmc_failures(srcs, [self.src, self.out, LIB], self.dir)
+
+    def test_translation_output(self):
+        t = translate([os.path.join(self.src, "mt_counter.h")], [self.src], self.out)
+        self.assertEqual(t.returncode, 0, t.stderr)
+        self.assertRegex(t.stdout, r"mt_counter_push\s+\d+ clauses translated: 1 requires, "
+                                   r"7 ensures, 2 behaviors \(2 assumes\), 1 complete, 1 disjoint")
+        self.assertIn("none dropped", t.stdout)
+        with open(os.path.join(self.out, "mt_counter_push_contract.h")) as f:
+            c = f.read()
+        with open(os.path.join(self.out, "mtc_logic.h")) as f:
+            logic = f.read()
+        # requires -> a predicate the harness assumes; ensures -> labelled assertions
+        self.assertIn("static int mtc_pre_mt_counter_push(mt_counter_t *c, uint8_t v)", c)
+        for lab in ("ensures inv", "ensures kept", "ensures room.status", "ensures room.grown",
+                    "ensures room.stored", "ensures full.status", "ensures full.same",
+                    "complete behaviors room, full", "disjoint behaviors room, full",
+                    "assigns (mt_counter_t.hits)", "assigns (bytes)"):
+            self.assertIn(f'"mt_counter_push: {lab}"', c)
+        # behaviours: assumes evaluated in the pre-state, ensures guarded by them
+        self.assertIn("int mtc_b_room = (mtc_MtCounterRoom(1, c) > ((__int128)0ull));", c)
+        # \old reads the snapshot; \forall in an ensures is one nondeterministic witness
+        self.assertIn("(*MTC_OLD(&((c)->n)))", c)
+        self.assertIn("mtc_nondet_i128()", c)
+        # assigns: c->n one location, c->buf[0 .. cap-1] a range evaluated in the pre-state
+        self.assertIn("mtc_in_one((const void *)(mtc_a), (__CPROVER_size_t)(mtc_n), "
+                      "(const void *)&((c)->n), sizeof((c)->n))", c)
+        self.assertIn("mtc_in_range(", c)
+        # logic: integers in __int128, \exists as a bounded loop, \valid/\separated
+        self.assertIn("static __int128 mtc_MtCounterRoom(int mtc_st, const mt_counter_t *mtc_p_c)", logic)
+        self.assertRegex(logic, r"for \(mtc_i_\d+ = mtc_lo; mtc_i_\d+ < mtc_hi; mtc_i_\d+\+\+\)")
+        self.assertIn("__CPROVER_w_ok(", logic)
+        self.assertIn("mtc_separated(", logic)
+        # the manifest names every label
+        with open(os.path.join(self.out, "manifest.json")) as f:
+            man = json.load(f)
+        self.assertIn("mt_counter_push: ensures room.grown",
+                      man["functions"]["mt_counter_push"]["labels"])
+
+    def test_cbmc_proves_sample(self):
+        failed, total = self.run_sample()
+        self.assertEqual(failed, [])
+        self.assertGreater(total, 100)
+
+    def test_mutated_ensures_caught_by_label(self):
+        mutated = SAMPLE_H.replace("ensures grown: c->n == \\old(c->n) + 1;",
+                                   "ensures grown: c->n == \\old(c->n) + 2;")
+        self.assertNotEqual(mutated, SAMPLE_H)
+        failed, _ = self.run_sample(header=mutated)
+        self.assertEqual(failed, ["mt_counter_push: ensures room.grown"])
+
+    def test_assigns_violation_caught(self):
+        bad = SAMPLE_C.replace("c->n++;", "c->n++;\n    c->hits++;")
+        failed, _ = self.run_sample(impl=bad)
+        self.assertIn("mt_counter_push: assigns (mt_counter_t.hits)", failed)
+        self.assertNotIn("mt_counter_push: ensures room.grown", failed)
+
+    def test_wrong_implementation_caught(self):
+        bad = SAMPLE_C.replace("c->buf[c->n] = v;", "c->buf[c->n] = (uint8_t)(v + 1u);")
+        failed, _ = self.run_sample(impl=bad)
+        self.assertEqual(failed, ["mt_counter_push: ensures room.stored"])
+
+
+class Unsupported(unittest.TestCase):
+    """Constructs outside the subset stop the translator (exit 2), naming the construct."""
+
+    CASES = {
+        "at": ("ensures e: c->n == \\at(c->n, Pre);", r"\\at"),
+        "let": ("ensures e: \\let k = c->n; k == 0;", r"\\let"),
+        "bitwise": ("ensures e: (c->n & 1) == 0;", "bitwise operator"),
+        "machine_cast": ("ensures e: (uint8_t)c->n == 0;", "cast to the machine type"),
+        "unbounded_exists": ("requires e: \\exists integer i; c->buf[i] == 0 && i == 0;",
+                             "cannot find the bounds"),
+        "reads": None,
+        "no_assigns": None,
+        "axiomatic": None,
+        "terminates": ("terminates c->n == 0;", "unsupported contract clause 'terminates'"),
+        "unknown_name": ("ensures e: Undefined(c);", "unknown logic function"),
+    }
+
+    def translate_contract(self, name, contract, extra_logic=""):
+        d = os.path.join(WORK, "unsupported", name)
+        shutil.rmtree(d, ignore_errors=True)
+        h = ("#include <stdint.h>\ntypedef struct { uint32_t n; uint8_t *buf; } mt_c_t;\n"
+             f"{extra_logic}\n/*@ {contract} */\nint mt_c_f(mt_c_t *c);\n")
+        write(os.path.join(d, "c.h"), h)
+        return translate([os.path.join(d, "c.h")], [d], os.path.join(d, "gen"))
+
+    def test_cases(self):
+        base = "requires v: \\valid(c);\n    assigns \\nothing;\n    "
+        for name, case in self.CASES.items():
+            with self.subTest(name):
+                if name == "reads":
+                    r = self.translate_contract(
+                        name, base + "ensures e: P(c);",
+                        "/*@ predicate P(mt_c_t *c) reads c->n; */")
+                    want = "reads clause"
+                elif name == "no_assigns":
+                    r = self.translate_contract(name, "ensures e: c->n == 0;")
+                    want = "no assigns clause"
+                elif name == "axiomatic":
+                    r = self.translate_contract(
+                        name, base + "ensures e: c->n == 0;",
+                        "/*@ axiomatic A { logic integer F(integer x); } */")
+                    want = "unsupported global annotation 'axiomatic'"
+                else:
+                    r = self.translate_contract(name, base + case[0])
+                    want = case[1]
+                self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
+                self.assertRegex(r.stderr, want)
+                self.assertIn("acsl2cbmc: error:", r.stderr)
+
+
+def copy_kernel(dst):
+    shutil.rmtree(dst, ignore_errors=True)
+    shutil.copytree(os.path.join(ROOT, "kernel"), os.path.join(dst, "kernel"))
+    os.makedirs(os.path.join(dst, "tools"))
+    shutil.copy(TOOL, os.path.join(dst, "tools"))
+
+
+MUT_FIND = """    behavior ok:
+      assumes n <= r->reserved;
+      ensures status: \\result == MT_OK;"""
+MUT_REPL = """    behavior ok:
+      assumes n <= r->reserved;
+      ensures status: \\result == MT_E_FULL;"""
+MUT_LABEL = "mt_bring_commit: ensures ok.status"
+WP_GOAL = "mt_bring_commit_ok_ensures_status"
+
+
+class KernelMutation(unittest.TestCase):
+    """One mutated ensures clause of a kernel header, checked by both tools."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.dirs = {}
+        for variant in ("original", "mutated"):
+            d = os.path.join(WORK, "kernel-mutation", variant)
+            copy_kernel(d)
+            if variant == "mutated":
+                h = os.path.join(d, "kernel/include/mt/ring.h")
+                with open(h) as f:
+                    text = f.read()
+                if text.count(MUT_FIND) != 1:
+                    raise unittest.SkipTest("the mt_bring_commit contract changed: update MUT_FIND")
+                with open(h, "w") as f:
+                    f.write(text.replace(MUT_FIND, MUT_REPL))
+            cls.dirs[variant] = d
+
+    def cbmc(self, variant):
+        d = self.dirs[variant]
+        gen = os.path.join(d, "gen")
+        t = subprocess.run([sys.executable, os.path.join(d, "tools", "acsl2cbmc.py"), "--root", d,
+                            "--out", gen, "--quiet"], capture_output=True, text=True)
+        self.assertEqual(t.returncode, 0, t.stderr)
+        with open(os.path.join(gen, ".stamp"), "w"):
+            pass
+        out = os.path.join(d, "cbmc")
+        r = subprocess.run(["make", "-s", "-C",
+                            os.path.join(ROOT, "proofs/cbmc/proofs/mt_bring_commit"), "result",
+                            f"ROOT={d}", f"GEN={gen}", f"OUT={out}", f"TOOLS_BIN={BIN}"],
+                           capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        failed = []
+        with open(os.path.join(out, "result.json")) as f:
+            for m in json.load(f):
+                for x in m.get("result", []):
+                    if x["status"] != "SUCCESS":
+                        failed.append(x["description"])
+        return failed
+
+    def test_cbmc(self):
+        self.assertEqual(self.cbmc("original"), [])
+        self.assertEqual(self.cbmc("mutated"), [MUT_LABEL])
+
+    def wp(self, variant):
+        d = self.dirs[variant]
+        conf = os.path.join(ROOT, "build", "proof", "why3.conf")
+        if not os.path.exists(conf):
+            subprocess.run([os.path.join(ROOT, "proofs", "wp", "mkconf.sh")], check=True,
+                           capture_output=True)
+        report = os.path.join(d, "wp.json")
+        inc = " ".join(f"-I{d}/kernel/{x}" for x in ("include", "port", "spec", "src"))
+        r = subprocess.run(["frama-c", "-wp", "-wp-fct", "mt_bring_commit", "-wp-rte",
+                            "-warn-unsigned-overflow", "-warn-unsigned-downcast",
+                            "-wp-model", "Typed", "-wp-prover", "cvc4,Z3:4.8.12:fixedTO",
+                            "-wp-timeout", "10", "-wp-par", "2", "-wp-cache", "none",
+                            f"-cpp-extra-args={inc}", "-wp-report-json", report,
+                            os.path.join(d, "kernel/src/ring.c")],
+                           capture_output=True, text=True, env={**os.environ, "WHY3CONFIG": conf})
+        self.assertTrue(os.path.exists(report), r.stdout[-3000:] + r.stderr[-3000:])
+        with open(report) as f:
+            goals = json.load(f)["wp:functions"]["mt_bring_commit"]
+        bad = sorted(k for k, v in goals.items() if k != "wp:section" and
+                     v["wp:main"].get("valid", 0) != v["wp:main"]["total"])
+        return bad, goals
+
+    @unittest.skipIf(shutil.which("frama-c") is None or os.environ.get("SKIP_WP") == "1",
+                     "frama-c not installed (tools/bootstrap.sh prove) or SKIP_WP=1")
+    def test_wp(self):
+        bad, goals = self.wp("original")
+        self.assertIn(WP_GOAL, goals)
+        self.assertEqual(bad, [])
+        bad, _ = self.wp("mutated")
+        self.assertEqual(bad, [WP_GOAL])
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
