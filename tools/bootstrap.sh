@@ -366,7 +366,7 @@ ensure_tla() {
 }
 
 do_prove() {
-    apt_ensure frama-c-base why3 z3 cvc4 gcc
+    apt_ensure frama-c-base why3 z3 cvc4 gcc cadical
     ensure_cbmc
     ensure_tla
     record frama-c "frama-c $(first_line frama-c -version)"
@@ -375,6 +375,7 @@ do_prove() {
     record cvc4 "$(cvc4 --version 2>&1 | grep -m1 -i 'version')"
     local cbmc_kind="private, Debian trixie"
     [ -L "$TOOLS/bin/cbmc" ] && cbmc_kind="system $(readlink "$TOOLS/bin/cbmc")"
+    record cadical "cadical $(dpkg-query -W -f='${Version}' cadical 2>/dev/null) (CBMC SAT back end)"
     record cbmc "cbmc $("$TOOLS/bin/cbmc" --version 2>&1 | head -n 1) (.tools/bin/cbmc, $cbmc_kind)"
     local tlc
     tlc="$(java -cp "$TOOLS/tla/tla2tools.jar" tlc2.TLC -h 2>&1 | grep -m1 -o 'Version [^ ]* of [0-9]* [A-Za-z]* [0-9]*' || true)"
