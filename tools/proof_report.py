@@ -63,6 +63,7 @@ def main():
     wp = load(f"{BUILD}/proof/wp/summary.json")
     cbmc = load(f"{BUILD}/proof/cbmc/summary.json")
     tla = load(f"{BUILD}/proof/tla/summary.json")
+    translator = load(f"{BUILD}/proof/cbmc/test/summary.json")
     selftest = load(f"{BUILD}/proof/selftest/summary.json")
     timing = load(f"{BUILD}/proof/timing.json") or {}
     assumptions = load("proofs/assumptions.json") or []
@@ -75,7 +76,7 @@ def main():
 
     problems = []
     summary = {
-        "wp": None, "cbmc": None, "tla": None, "selftest": None,
+        "wp": None, "cbmc": None, "tla": None, "translator": None, "selftest": None,
         "assumptions": assumptions, "timing": timing, "versions": versions.splitlines(),
     }
 
@@ -112,6 +113,14 @@ def main():
         summary["tla"] = {"models": tla.get("total", 0), "passed": tla.get("passed", 0)}
         if tla.get("passed", 0) != tla.get("total", 0) or tla.get("total", 0) == 0:
             problems.append(f"TLA+: {tla.get('passed', 0)}/{tla.get('total', 0)} configurations as expected")
+    if translator is None:
+        absent("translator", "translator tests missing: make cbmc-test did not run")
+    else:
+        summary["translator"] = {k: translator.get(k, 0) for k in ("tests", "passed", "failed", "skipped")}
+        if translator.get("passed", 0) != translator.get("tests", 0) or translator.get("tests", 0) == 0:
+            problems.append(f"translator tests (ACSL -> CBMC, mutated ensures caught by WP and CBMC): "
+                            f"{translator.get('passed', 0)}/{translator.get('tests', 0)} passed "
+                            f"({', '.join(translator.get('not_passed', []))})")
     if selftest is not None:
         summary["selftest"] = {"mutants": selftest.get("mutants", 0), "killed": selftest.get("killed", 0)}
         if selftest.get("killed", 0) != selftest.get("mutants", 0):
@@ -123,6 +132,7 @@ def main():
         "wp.smoke_passed": (summary["wp"] or {}).get("smoke_passed", 0),
         "cbmc.passed": (summary["cbmc"] or {}).get("passed", 0),
         "tla.passed": (summary["tla"] or {}).get("passed", 0),
+        "translator.passed": (summary["translator"] or {}).get("passed", 0),
     }
     if summary["selftest"] is not None:
         counts["selftest.killed"] = summary["selftest"]["killed"]
@@ -208,6 +218,10 @@ def main():
     if summary["tla"]:
         t = summary["tla"]
         md.append(f"- TLC: {t['passed']}/{t['models']} model configurations as expected")
+    if summary["translator"]:
+        t = summary["translator"]
+        md.append(f"- Translator tests (`make cbmc-test`: sample contract, unsupported constructs, one "
+                  f"mutated kernel ensures rejected by both CBMC and WP): {t['passed']}/{t['tests']} passed")
     if summary["selftest"]:
         s = summary["selftest"]
         md.append(f"- Mutation check: {s['killed']}/{s['mutants']} seeded bugs rejected")
