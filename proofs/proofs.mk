@@ -16,7 +16,11 @@ BUILD ?= build
 WP_ROOT      := $(BUILD)/proof
 WP_DIR       ?= $(WP_ROOT)/wp
 WP_WHY3CONF  := $(WP_ROOT)/why3.conf
-WP_MODULES   := $(filter-out invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws
+# Longest first (make -j starts them in this order, so the slowest module does not start
+# last and leave one core idle at the end); modules not named here follow, alphabetically.
+WP_ORDER     := sched ring objring proc laws sem time status
+WP_ALL_MODS  := $(filter-out invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws
+WP_MODULES   := $(filter $(WP_ALL_MODS),$(WP_ORDER)) $(filter-out $(WP_ORDER),$(WP_ALL_MODS))
 WP_TIMEOUT   := 10
 WP_PAR       := 2
 WP_JOBS      := 2
