@@ -396,22 +396,27 @@ def arm_phase(build):
 
 
 # ---------------------------------------------------------------- proofs
+def read_parts(path):
+    """{part: seconds} from a timing file of tools/prove.sh, or None."""
+    if not os.path.isfile(path):
+        return None
+    try:
+        with open(path) as f:
+            return {k: float(v) for k, v in json.load(f).items()}
+    except (OSError, ValueError):
+        return None
+
+
 def proof_phase(build):
-    """Wall times of the last `make prove` (tools/prove.sh writes build/proof/timing.json,
-    one entry per part) and of each WP module (build/proof/wp/<module>/time.txt)."""
+    """Wall times of the last `make prove` with a cold WP cache (full proof) and with a warm
+    one (incremental): tools/prove.sh writes build/proof/timing-{cold,warm}.json, one entry
+    per part; and of each WP module in the last run (build/proof/wp/<module>/time.txt)."""
     found = {}
     proof = os.path.join(ROOT, build, "proof")
-    timing = os.path.join(proof, "timing.json")
-    if os.path.isfile(timing):
-        try:
-            with open(timing) as f:
-                found["parts"] = {k: float(v) for k, v in json.load(f).items()}
-        except (OSError, ValueError) as e:
-            found["error"] = str(e)
-    kind = os.path.join(proof, "cache.txt")
-    if os.path.isfile(kind):
-        with open(kind) as f:
-            found["cache"] = f.read().strip()
+    for kind in ("cold", "warm"):
+        parts = read_parts(os.path.join(proof, f"timing-{kind}.json"))
+        if parts:
+            found[kind] = parts
     modules = {}
     for t in sorted(glob.glob(os.path.join(proof, "wp", "*", "time.txt"))):
         try:
@@ -424,20 +429,22 @@ def proof_phase(build):
     return found
 
 
-def proof_times(found):
-    """Short text for the table: the wall time of each proof part, and the slowest WP module."""
-    if not found or "parts" not in found:
+def proof_times(found, kind):
+    """Short text for the table: the wall time of each proof part of the last `make prove` of
+    this kind (cold: full proof; warm: incremental), or None."""
+    parts = (found or {}).get(kind)
+    if not parts:
         return None
-    parts = found["parts"]
     text = ", ".join(f"{k} {v:.0f} s" for k, v in parts.items())
-    text += f"; total {sum(parts.values()):.0f} s"
-    if found.get("cache"):
-        text += f" ({found['cache']} WP cache)"
-    mods = found.get("wp_modules") or {}
-    if mods:
-        slow = max(mods, key=mods.get)
-        text += f" (slowest WP module: {slow} {mods[slow]:.0f} s)"
-    return text
+    return text + f"; total {sum(parts.values()):.0f} s"
+
+
+def slowest_module(found):
+    mods = (found or {}).get("wp_modules") or {}
+    if not mods:
+        return None
+    slow = max(mods, key=mods.get)
+    return f"{slow} {mods[slow]:.0f} s"
 
 
 # ------------------------------------------------------------------ table
@@ -662,9 +669,15 @@ def build_report(info, cg, wc, arm, proofs, elapsed_cg, elapsed_wc):
         row("M4", "Cortex-M4 code size", "not measured", "", "", "", "arm-none-eabi-gcc not installed")
 
     # ---- proofs
-    ptxt = proof_times(proofs)
-    row("PROOF", "proof-suite wall time", ptxt if ptxt else "not measured in this run", "", "", "",
-        "last make prove: build/proof/timing.json, build/proof/wp/*/time.txt")
+    for kind, what in (("cold", "full, cold WP cache"), ("warm", "incremental, warm WP cache")):
+        ptxt = proof_times(proofs, kind)
+        row("PROOF", f"make prove wall time ({what})",
+            ptxt if ptxt else "no such run in this build tree", "", "", "",
+            f"last one: build/proof/timing-{kind}.json")
+    slow = slowest_module(proofs)
+    if slow:
+        row("PROOF", "slowest WP module, last make wp", slow, "", "", "",
+            "build/proof/wp/*/time.txt")
     return rows, targets, J
 
 
