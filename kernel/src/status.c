@@ -25,6 +25,15 @@ const char *mt_status_str(mt_status_t st)
     case MT_E_LOOP_RATE: name = "MT_E_LOOP_RATE"; break;
     case MT_E_TASK_FN: name = "MT_E_TASK_FN"; break;
     case MT_W_DROPPED_OLDEST: name = "MT_W_DROPPED_OLDEST"; break;
+    case MT_E_MISSION_CMD: name = "MT_E_MISSION_CMD"; break;
+    case MT_E_MISSION_PARAM: name = "MT_E_MISSION_PARAM"; break;
+    case MT_E_MISSION_LOCATION: name = "MT_E_MISSION_LOCATION"; break;
+    case MT_E_MISSION_FRAME: name = "MT_E_MISSION_FRAME"; break;
+    case MT_E_MISSION_JUMP: name = "MT_E_MISSION_JUMP"; break;
+    case MT_E_MISSION_LOOP: name = "MT_E_MISSION_LOOP"; break;
+    case MT_E_MISSION_SIZE: name = "MT_E_MISSION_SIZE"; break;
+    case MT_E_MISSION_SYNTAX: name = "MT_E_MISSION_SYNTAX"; break;
+    case MT_E_STATE: name = "MT_E_STATE"; break;
     case MT_STATUS_COUNT:
     default: name = "MT_STATUS_?"; break;
     }

@@ -34,6 +34,13 @@
 #define MT_CFG_CACHE_LINE 64u
 #endif
 
+/** Capacity of the mission command list, home (index 0) included (ArduPilot:
+ *  storage-dependent, 724 on a 16 KiB FRAM). Indices are 16-bit; the mission
+ *  module keeps about 34 bytes of RAM per command (see mt/mission.h). */
+#if !defined(MT_CFG_MISSION_MAX_CMDS)
+#define MT_CFG_MISSION_MAX_CMDS 700u
+#endif
+
 #if (MT_CFG_SCHED_MAX_TASKS < 1u) || (MT_CFG_SCHED_MAX_TASKS > 255u)
 #error "MT_CFG_SCHED_MAX_TASKS must be in [1, 255]"
 #endif
@@ -43,6 +50,10 @@
 #if (MT_CFG_CACHE_LINE != 0u) && (MT_CFG_CACHE_LINE != 32u) && (MT_CFG_CACHE_LINE != 64u) && \
     (MT_CFG_CACHE_LINE != 128u)
 #error "MT_CFG_CACHE_LINE must be 0, 32, 64 or 128"
+#endif
+
+#if (MT_CFG_MISSION_MAX_CMDS < 2u) || (MT_CFG_MISSION_MAX_CMDS > 32766u)
+#error "MT_CFG_MISSION_MAX_CMDS must be in [2, 32766]"
 #endif
 
 #endif /* MT_CONFIG_H */

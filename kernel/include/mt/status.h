@@ -35,7 +35,23 @@ typedef enum {
     MT_W_DROPPED_OLDEST = 14, /**< Pushed into the spare slot of a ring that was full when the
                                    push looked: the consumer discards the oldest object unless
                                    it consumed it meanwhile; its `lost` counts actual drops. */
-    MT_STATUS_COUNT = 15     /**< Number of statuses (sentinel, not a status). */
+    MT_E_MISSION_CMD = 15,   /**< Mission: unknown or reserved command id, or index 0 (home) is
+                                  not a waypoint. */
+    MT_E_MISSION_PARAM = 16, /**< Mission: a parameter is outside its range, not an integer
+                                  where one is needed, or NaN where NaN is not allowed. */
+    MT_E_MISSION_LOCATION = 17, /**< Mission: latitude or longitude out of range. */
+    MT_E_MISSION_FRAME = 18, /**< Mission: coordinate frame not supported for the command. */
+    MT_E_MISSION_JUMP = 19,  /**< Mission: jump target outside [1, count), unknown jump tag,
+                                  or repeat count outside {-1} and [0, 32767]. */
+    MT_E_MISSION_LOOP = 20,  /**< Mission: a loop that contains no nav command (the do-only
+                                  repeat lockup); reported at the first index on the loop
+                                  or leading into it. */
+    MT_E_MISSION_SIZE = 21,  /**< Mission: no home entry, or more than MT_CFG_MISSION_MAX_CMDS
+                                  commands. */
+    MT_E_MISSION_SYNTAX = 22, /**< Mission file: malformed line or field (file layer). */
+    MT_E_STATE = 23,         /**< The operation is not allowed in the object's current state
+                                  (mission running, stopped, complete). */
+    MT_STATUS_COUNT = 24     /**< Number of statuses (sentinel, not a status). */
 } mt_status_t;
 
 /** Short stable name of a status ("MT_E_FULL"); "MT_STATUS_?" for an unknown value. */

@@ -1,0 +1,896 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file mission.c
+ * @brief Mission-command sequencer (see mt/mission.h for the operating rules).
+ *
+ * Execution is one walk over the list (m->wpos) that counts jumps as it
+ * passes them. The nav cursor looks ahead from the walk position with the
+ * committed counters (mt_mission_next_nav, pure); the do cursor then moves the
+ * walk through the do commands before that nav command; when the nav command
+ * completes, the walk is fast-forwarded past it (dropping the do commands not
+ * started). Validation guarantees that no loop lacks a nav command, so a walk
+ * from any position to the next nav command visits each jump at most once:
+ * the look-ahead and the walk therefore see the same counter values.
+ */
+#include "mt/mission.h"
+
+#include "mt_mission_invoke.h"
+
+/* Command table flags. */
+#define F_LOC 0x01u  /* uses x/y/z as a location: global frame, lat/lon range */
+#define F_NAN3 0x02u /* param 3 may be NaN */
+#define F_NAN4 0x04u /* param 4 may be NaN */
+#define F_NN1 0x08u  /* param 1 >= 0 */
+#define F_NN2 0x10u  /* param 2 >= 0 */
+#define F_INT1 0x20u /* param 1 is an integer */
+#define F_INT2 0x40u /* param 2 is an integer */
+
+typedef struct {
+    uint16_t id;
+    uint8_t kind;
+    uint8_t flags;
+} cmd_info_t;
+
+#define NAV MT_MISSION_KIND_NAV
+#define DO MT_MISSION_KIND_DO
+
+#define N_CMDS 61u
+
+/* Commands a vehicle needs (MAVLink common + ArduPilot mission subset). */
+static const cmd_info_t k_cmds[N_CMDS] = {
+    {16u, NAV, F_LOC | F_NAN4 | F_NN1 | F_NN2}, /* WAYPOINT */
+    {17u, NAV, F_LOC | F_NAN4},                 /* LOITER_UNLIM */
+    {18u, NAV, F_LOC | F_NN1},                  /* LOITER_TURNS */
+    {19u, NAV, F_LOC | F_NN1},                  /* LOITER_TIME */
+    {20u, NAV, 0u},                             /* RETURN_TO_LAUNCH */
+    {21u, NAV, F_LOC | F_NAN4},                 /* LAND */
+    {22u, NAV, F_LOC | F_NAN4},                 /* TAKEOFF */
+    {30u, NAV, F_LOC},                          /* CONTINUE_AND_CHANGE_ALT */
+    {31u, NAV, F_LOC},                          /* LOITER_TO_ALT */
+    {82u, NAV, F_LOC | F_NN1},                  /* SPLINE_WAYPOINT */
+    {83u, NAV, 0u},                             /* ALTITUDE_WAIT */
+    {84u, NAV, F_LOC | F_NAN4},                 /* VTOL_TAKEOFF */
+    {85u, NAV, F_LOC | F_NAN3 | F_NAN4},        /* VTOL_LAND */
+    {92u, NAV, 0u},                             /* GUIDED_ENABLE */
+    {93u, NAV, 0u},                             /* DELAY */
+    {94u, NAV, F_LOC},                          /* PAYLOAD_PLACE */
+    {112u, DO, F_NN1},                          /* CONDITION_DELAY */
+    {113u, DO, 0u},                             /* CONDITION_CHANGE_ALT */
+    {114u, DO, F_NN1},                          /* CONDITION_DISTANCE */
+    {115u, DO, F_NN2},                          /* CONDITION_YAW (special) */
+    {176u, DO, 0u},                             /* DO_SET_MODE */
+    {177u, MT_MISSION_KIND_JUMP, 0u},           /* DO_JUMP (special) */
+    {178u, DO, F_INT1},                         /* DO_CHANGE_SPEED (special) */
+    {179u, DO, F_LOC},                          /* DO_SET_HOME (special) */
+    {181u, DO, F_INT1 | F_NN1},                 /* DO_SET_RELAY */
+    {182u, DO, F_INT1 | F_NN1 | F_INT2 | F_NN2}, /* DO_REPEAT_RELAY */
+    {183u, DO, F_INT1 | F_INT2 | F_NN2},        /* DO_SET_SERVO (special) */
+    {184u, DO, F_INT1 | F_NN1 | F_INT2 | F_NN2}, /* DO_REPEAT_SERVO */
+    {188u, DO, F_LOC},                          /* DO_RETURN_PATH_START */
+    {189u, DO, F_LOC},                          /* DO_LAND_START */
+    {191u, DO, F_LOC},                          /* DO_GO_AROUND */
+    {194u, DO, 0u},                             /* DO_SET_REVERSE */
+    {195u, DO, F_LOC},                          /* DO_SET_ROI_LOCATION */
+    {197u, DO, 0u},                             /* DO_SET_ROI_NONE */
+    {201u, DO, F_LOC},                          /* DO_SET_ROI */
+    {202u, DO, 0u},                             /* DO_DIGICAM_CONFIGURE */
+    {203u, DO, 0u},                             /* DO_DIGICAM_CONTROL */
+    {205u, DO, 0u},                             /* DO_MOUNT_CONTROL */
+    {206u, DO, F_NN1},                          /* DO_SET_CAM_TRIGG_DIST */
+    {207u, DO, 0u},                             /* DO_FENCE_ENABLE */
+    {208u, DO, 0u},                             /* DO_PARACHUTE */
+    {210u, DO, 0u},                             /* DO_INVERTED_FLIGHT */
+    {211u, DO, 0u},                             /* DO_GRIPPER */
+    {212u, DO, 0u},                             /* DO_AUTOTUNE_ENABLE */
+    {213u, NAV, 0u},                            /* NAV_SET_YAW_SPEED */
+    {214u, DO, F_NN1},                          /* DO_SET_RESUME_REPEAT_DIST */
+    {215u, DO, 0u},                             /* DO_SPRAYER */
+    {216u, DO, 0u},                             /* DO_SEND_SCRIPT_MESSAGE */
+    {217u, DO, 0u},                             /* DO_AUX_FUNCTION */
+    {222u, DO, 0u},                             /* DO_GUIDED_LIMITS */
+    {223u, DO, 0u},                             /* DO_ENGINE_CONTROL */
+    {600u, MT_MISSION_KIND_TAG, F_INT1 | F_NN1}, /* JUMP_TAG (special) */
+    {601u, MT_MISSION_KIND_JUMP, 0u},           /* DO_JUMP_TAG (special) */
+    {1000u, DO, 0u},                            /* DO_GIMBAL_MANAGER_PITCHYAW */
+    {2000u, DO, 0u},                            /* IMAGE_START_CAPTURE */
+    {2001u, DO, 0u},                            /* IMAGE_STOP_CAPTURE */
+    {2500u, DO, 0u},                            /* VIDEO_START_CAPTURE */
+    {2501u, DO, 0u},                            /* VIDEO_STOP_CAPTURE */
+    {3000u, DO, 0u},                            /* DO_VTOL_TRANSITION */
+    {42702u, NAV, 0u},                          /* NAV_SCRIPT_TIME */
+    {42703u, NAV, 0u},                          /* NAV_ATTITUDE_TIME */
+};
+
+#if !defined(__FRAMAC__)
+_Static_assert(sizeof k_cmds / sizeof k_cmds[0] == N_CMDS, "N_CMDS must match the table");
+#endif
+
+/* Position of id in the table, or N_CMDS. Bounded by the table size. */
+/*@ assigns \nothing;
+    ensures range: 0 <= \result <= N_CMDS;
+    ensures found: \result < N_CMDS ==> k_cmds[\result].id == id;
+    ensures absent: \result == N_CMDS ==> \forall integer t; 0 <= t < N_CMDS ==> k_cmds[t].id != id;
+*/
+static uint32_t find_cmd(uint16_t id)
+{
+    uint32_t t;
+
+    /*@ loop invariant 0 <= t <= N_CMDS;
+        loop invariant \forall integer u; 0 <= u < t ==> k_cmds[u].id != id;
+        loop assigns t;
+        loop variant N_CMDS - t;
+    */
+    for (t = 0u; t < N_CMDS; t++) {
+        if (k_cmds[t].id == id) {
+            return t;
+        }
+    }
+    return N_CMDS;
+}
+
+uint8_t mt_mission_kind_of(uint16_t id)
+{
+    uint32_t t;
+
+    if ((id == MT_MAV_CMD_DO_JUMP) || (id == MT_MAV_CMD_DO_JUMP_TAG)) {
+        return MT_MISSION_KIND_JUMP;
+    }
+    if (id == MT_MAV_CMD_JUMP_TAG) {
+        return MT_MISSION_KIND_TAG;
+    }
+    t = find_cmd(id);
+    if ((t < N_CMDS) && (k_cmds[t].kind == MT_MISSION_KIND_NAV)) {
+        return MT_MISSION_KIND_NAV;
+    }
+    if (t < N_CMDS) {
+        return MT_MISSION_KIND_DO;
+    }
+    return MT_MISSION_KIND_HOME;
+}
+
+void mt_mission_init(mt_mission_t *m, mt_mission_cmd_fn_t start_fn, mt_mission_cmd_fn_t verify_fn,
+                     mt_mission_done_fn_t complete_fn, void *ctx)
+{
+    m->kind[0] = MT_MISSION_KIND_HOME;
+    m->total = 0u;
+    m->generation = 0u;
+    m->state = MT_MISSION_STOPPED;
+    m->do_done = 0u;
+    m->nav = MT_MISSION_NONE;
+    m->do_cmd = MT_MISSION_NONE;
+    m->wpos = 0u;
+    m->prev_nav = MT_MISSION_NONE;
+    m->completions = 0u;
+    m->start_fn = start_fn;
+    m->verify_fn = verify_fn;
+    m->complete_fn = complete_fn;
+    m->ctx = ctx;
+}
+
+/* ------------------------------------------------------------ validation */
+
+/* Frames: 0 GLOBAL, 3 GLOBAL_RELATIVE_ALT, 5 GLOBAL_INT, 6 GLOBAL_RELATIVE_ALT_INT,
+ * 10 GLOBAL_TERRAIN_ALT, 11 GLOBAL_TERRAIN_ALT_INT; 2 MISSION only without a location. */
+/*@ assigns \nothing; */
+static int frame_ok(uint8_t frame, uint8_t flags)
+{
+    if ((frame == 0u) || (frame == 3u) || (frame == 5u) || (frame == 6u) || (frame == 10u) ||
+        (frame == 11u)) {
+        return 1;
+    }
+    return ((frame == 2u) && ((flags & F_LOC) == 0u)) ? 1 : 0;
+}
+
+/*@ assigns \nothing;
+    ensures \result == 1 <==> v % MT_MISSION_MILLI == 0;
+*/
+static int is_int(int32_t v)
+{
+    return ((v % MT_MISSION_MILLI) == 0) ? 1 : 0;
+}
+
+/*@ assigns \nothing;
+    ensures \result == 1 <==> MtMissionRepeatOk(v);
+*/
+static int repeat_ok(int32_t v)
+{
+    return ((is_int(v) != 0) && (v >= -MT_MISSION_MILLI) &&
+            (v <= MT_MISSION_REPEAT_MAX * MT_MISSION_MILLI))
+               ? 1
+               : 0;
+}
+
+/* Generic param rules from the table flags (params are never NaN here unless allowed). */
+/*@ requires \valid_read(c);
+    assigns \nothing;
+*/
+static mt_status_t params_ok(const mt_mission_cmd_t *c, uint8_t flags)
+{
+    if ((c->param[0] == MT_MISSION_PARAM_NAN) || (c->param[1] == MT_MISSION_PARAM_NAN)) {
+        return MT_E_MISSION_PARAM;
+    }
+    if ((c->param[2] == MT_MISSION_PARAM_NAN) && ((flags & F_NAN3) == 0u)) {
+        return MT_E_MISSION_PARAM;
+    }
+    if ((c->param[3] == MT_MISSION_PARAM_NAN) && ((flags & F_NAN4) == 0u)) {
+        return MT_E_MISSION_PARAM;
+    }
+    if (((flags & F_NN1) != 0u) && (c->param[0] < 0)) {
+        return MT_E_MISSION_PARAM;
+    }
+    if (((flags & F_NN2) != 0u) && (c->param[1] < 0)) {
+        return MT_E_MISSION_PARAM;
+    }
+    if (((flags & F_INT1) != 0u) && (is_int(c->param[0]) == 0)) {
+        return MT_E_MISSION_PARAM;
+    }
+    if (((flags & F_INT2) != 0u) && (is_int(c->param[1]) == 0)) {
+        return MT_E_MISSION_PARAM;
+    }
+    return MT_OK;
+}
+
+/* Command-specific param rules. */
+/*@ requires \valid_read(c);
+    assigns \nothing;
+*/
+static mt_status_t special_ok(const mt_mission_cmd_t *c)
+{
+    const int32_t *p = c->param;
+
+    switch (c->id) {
+    case MT_MAV_CMD_CONDITION_YAW:
+        /* angle [0, 360] deg, direction -1/0/1, relative 0/1 */
+        if ((p[0] < 0) || (p[0] > 360 * MT_MISSION_MILLI) ||
+            ((p[2] != -MT_MISSION_MILLI) && (p[2] != 0) && (p[2] != MT_MISSION_MILLI)) ||
+            ((p[3] != 0) && (p[3] != MT_MISSION_MILLI))) {
+            return MT_E_MISSION_PARAM;
+        }
+        break;
+    case MT_MAV_CMD_DO_CHANGE_SPEED:
+        /* speed type 0..3; speed >= -2 (AP: -1 no change, -2 default) */
+        if ((p[0] < 0) || (p[0] > 3 * MT_MISSION_MILLI) || (p[1] < -2 * MT_MISSION_MILLI)) {
+            return MT_E_MISSION_PARAM;
+        }
+        break;
+    case MT_MAV_CMD_DO_SET_HOME:
+        if ((p[0] != 0) && (p[0] != MT_MISSION_MILLI)) {
+            return MT_E_MISSION_PARAM;
+        }
+        break;
+    case MT_MAV_CMD_DO_SET_SERVO:
+        /* channel 1..32, pwm 0..65535 */
+        if ((p[0] < MT_MISSION_MILLI) || (p[0] > 32 * MT_MISSION_MILLI) ||
+            (p[1] > 65535 * MT_MISSION_MILLI)) {
+            return MT_E_MISSION_PARAM;
+        }
+        break;
+    case MT_MAV_CMD_JUMP_TAG:
+        if (p[0] > 65535 * MT_MISSION_MILLI) {
+            return MT_E_MISSION_PARAM;
+        }
+        break;
+    default:
+        break;
+    }
+    return MT_OK;
+}
+
+mt_status_t mt_mission_check_cmd(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
+{
+    const mt_mission_cmd_t *c = &cmds[i];
+    uint32_t t = find_cmd(c->id);
+    uint8_t flags;
+    mt_status_t st;
+
+    if (t >= N_CMDS) {
+        return MT_E_MISSION_CMD;
+    }
+    if ((i == 0u) && (c->id != MT_MAV_CMD_WAYPOINT)) {
+        return MT_E_MISSION_CMD; /* home must be a waypoint */
+    }
+    flags = k_cmds[t].flags;
+    if (frame_ok(c->frame, flags) == 0) {
+        return MT_E_MISSION_FRAME;
+    }
+    st = params_ok(c, flags);
+    if (st != MT_OK) {
+        return st;
+    }
+    st = special_ok(c);
+    if (st != MT_OK) {
+        return st;
+    }
+    if (((flags & F_LOC) != 0u) &&
+        ((c->x < -MT_MISSION_LAT_MAX) || (c->x > MT_MISSION_LAT_MAX) ||
+         (c->y < -MT_MISSION_LON_MAX) || (c->y > MT_MISSION_LON_MAX))) {
+        return MT_E_MISSION_LOCATION;
+    }
+    if ((c->id == MT_MAV_CMD_DO_JUMP) || (c->id == MT_MAV_CMD_DO_JUMP_TAG)) {
+        if (repeat_ok(c->param[1]) == 0) {
+            return MT_E_MISSION_JUMP;
+        }
+        if (is_int(c->param[0]) == 0) {
+            return MT_E_MISSION_JUMP;
+        }
+        if (c->id == MT_MAV_CMD_DO_JUMP) {
+            if ((c->param[0] < MT_MISSION_MILLI) ||
+                ((c->param[0] / MT_MISSION_MILLI) >= (int32_t)n)) {
+                return MT_E_MISSION_JUMP;
+            }
+        } else if ((c->param[0] < 0) || (c->param[0] > 65535 * MT_MISSION_MILLI)) {
+            return MT_E_MISSION_JUMP;
+        }
+    }
+    return MT_OK;
+}
+
+/* First JUMP_TAG in [1, n) whose tag is `tag` (fixed point), or n. Bounded by n. */
+/*@ requires MtMissionCmdsIn(cmds, n);
+    assigns \nothing;
+    ensures 1 <= \result <= n;
+*/
+static uint16_t find_tag(const mt_mission_cmd_t *cmds, uint16_t n, int32_t tag)
+{
+    uint16_t j;
+
+    /*@ loop invariant 1 <= j <= n;
+        loop assigns j;
+        loop variant n - j;
+    */
+    for (j = 1u; j < n; j++) {
+        if ((cmds[j].id == MT_MAV_CMD_JUMP_TAG) && (cmds[j].param[0] == tag)) {
+            return j;
+        }
+    }
+    return n;
+}
+
+/* Whether every walk from index i reaches a nav command or the end, given the
+ * marks of the other nodes (one relaxation step of the loop check). */
+/*@ requires MtMissionStaged(m, cmds, n);
+    requires 1 <= i < n;
+    requires \valid_read(m->safe + (0 .. n - 1));
+    assigns \nothing;
+*/
+static uint8_t node_safe(const mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
+{
+    uint16_t id = cmds[i].id;
+    uint8_t next = (i + 1u >= n) ? 1u : m->safe[i + 1u];
+    int32_t rep;
+    uint8_t tgt;
+
+    if ((id != MT_MAV_CMD_DO_JUMP) && (id != MT_MAV_CMD_DO_JUMP_TAG)) {
+        return (mt_mission_kind_of(id) == MT_MISSION_KIND_NAV) ? 1u : next;
+    }
+    rep = cmds[i].param[1];
+    tgt = m->safe[m->scratch_target[i]];
+    if (rep < 0) {
+        return tgt;
+    }
+    if (rep == 0) {
+        return next;
+    }
+    return ((tgt != 0u) && (next != 0u)) ? 1u : 0u;
+}
+
+mt_status_t mt_mission_check(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
+{
+    uint16_t i;
+    uint32_t round;
+    mt_status_t st;
+    int changed;
+
+    *bad = 0u;
+    if ((n < 1u) || (n > MT_CFG_MISSION_MAX_CMDS)) {
+        return MT_E_MISSION_SIZE;
+    }
+    /* 1. every command on its own; jump targets into the scratch */
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant \forall integer j; 1 <= j < i ==> MtMissionIsJumpId(cmds[j].id) ==>
+            1 <= m->scratch_target[j] < n && MtMissionRepeatOk(cmds[j].param[1]);
+        loop assigns i, m->scratch_target[0 .. n - 1], *bad;
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
+        st = mt_mission_check_cmd(cmds, n, i);
+        if (st != MT_OK) {
+            *bad = i;
+            return st;
+        }
+        m->scratch_target[i] = 0u;
+        if ((i >= 1u) && (cmds[i].id == MT_MAV_CMD_DO_JUMP)) {
+            m->scratch_target[i] = (uint16_t)(cmds[i].param[0] / MT_MISSION_MILLI);
+        } else if ((i >= 1u) && (cmds[i].id == MT_MAV_CMD_DO_JUMP_TAG)) {
+            uint16_t t = find_tag(cmds, n, cmds[i].param[0]);
+            if (t >= n) {
+                *bad = i;
+                return MT_E_MISSION_JUMP;
+            }
+            m->scratch_target[i] = t;
+        }
+    }
+    /* 2. loop check: mark the nodes from which every walk reaches a nav command or
+     *    the end; a node never marked lies on, or leads into, a loop without a nav
+     *    command. n rounds suffice (each round marks at least one new node). */
+    /*@ loop invariant 0 <= i <= n;
+        loop assigns i, m->safe[0 .. n - 1];
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
+        m->safe[i] = 0u;
+    }
+    changed = 1;
+    /*@ loop invariant 0 <= round <= n;
+        loop invariant MtMissionStaged(m, cmds, n);
+        loop assigns round, changed, i, m->safe[0 .. n - 1];
+        loop variant n - round;
+    */
+    for (round = 0u; (round < n) && (changed != 0); round++) {
+        changed = 0;
+        /*@ loop invariant 0 <= i < n;
+            loop invariant MtMissionStaged(m, cmds, n);
+            loop assigns i, changed, m->safe[0 .. n - 1];
+            loop variant i;
+        */
+        for (i = (uint16_t)(n - 1u); i >= 1u; i--) {
+            if ((m->safe[i] == 0u) && (node_safe(m, cmds, n, i) != 0u)) {
+                m->safe[i] = 1u;
+                changed = 1;
+            }
+        }
+    }
+    /*@ loop invariant 1 <= i <= n;
+        loop assigns i, *bad;
+        loop variant n - i;
+    */
+    for (i = 1u; i < n; i++) {
+        if (m->safe[i] == 0u) {
+            *bad = i;
+            return MT_E_MISSION_LOOP;
+        }
+    }
+    *bad = MT_MISSION_NONE;
+    return MT_OK;
+}
+
+/* Make the checked list the active mission. Cannot fail. */
+/*@ requires MtMissionInv(m);
+    requires MtMissionStaged(m, cmds, n);
+    requires \separated(cmds + (0 .. n - 1), m);
+    assigns m->cmd[0 .. n - 1], m->kind[0 .. n - 1], m->target[0 .. n - 1], m->repeat[0 .. n - 1],
+            m->count[0 .. n - 1], m->total, m->generation, m->state, m->do_done, m->nav,
+            m->do_cmd, m->wpos, m->prev_nav;
+    ensures MtMissionInv(m);
+    ensures m->total == n && m->state == MT_MISSION_STOPPED && m->wpos == 1;
+    ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+    ensures m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF;
+*/
+static void apply(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
+{
+    uint16_t i;
+
+    m->total = 0u;
+    m->cmd[0] = cmds[0];
+    m->kind[0] = MT_MISSION_KIND_HOME;
+    m->target[0] = 0u;
+    m->repeat[0] = 0;
+    m->count[0] = 0;
+    /*@ loop invariant 1 <= i <= n;
+        loop invariant m->kind[0] == MT_MISSION_KIND_HOME;
+        loop invariant \forall integer j; 1 <= j < i ==>
+            (m->kind[j] == MT_MISSION_KIND_NAV || m->kind[j] == MT_MISSION_KIND_DO ||
+             m->kind[j] == MT_MISSION_KIND_JUMP || m->kind[j] == MT_MISSION_KIND_TAG) &&
+            (m->kind[j] == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(m->cmd[j].id)) &&
+            (m->kind[j] == MT_MISSION_KIND_TAG <==> m->cmd[j].id == MT_MAV_CMD_JUMP_TAG) &&
+            (m->kind[j] == MT_MISSION_KIND_JUMP ==>
+                1 <= m->target[j] < n && -1 <= m->repeat[j] <= MT_MISSION_REPEAT_MAX &&
+                m->count[j] == 0);
+        loop assigns i, m->cmd[1 .. n - 1], m->kind[1 .. n - 1], m->target[1 .. n - 1],
+                     m->repeat[1 .. n - 1], m->count[1 .. n - 1];
+        loop variant n - i;
+    */
+    for (i = 1u; i < n; i++) {
+        uint8_t k = mt_mission_kind_of(cmds[i].id);
+        if (k == MT_MISSION_KIND_HOME) {
+            k = MT_MISSION_KIND_DO; /* unreachable after the check */
+        }
+        m->cmd[i] = cmds[i];
+        m->kind[i] = k;
+        m->target[i] = 0u;
+        m->repeat[i] = 0;
+        m->count[i] = 0;
+        if (k == MT_MISSION_KIND_JUMP) {
+            m->target[i] = m->scratch_target[i];
+            m->repeat[i] = (int16_t)(cmds[i].param[1] / MT_MISSION_MILLI);
+        }
+    }
+    m->total = n;
+    if (m->generation < 0xFFFFFFFFu) {
+        m->generation++;
+    }
+    m->state = MT_MISSION_STOPPED;
+    m->do_done = 0u;
+    m->nav = MT_MISSION_NONE;
+    m->do_cmd = MT_MISSION_NONE;
+    m->wpos = 1u;
+    m->prev_nav = MT_MISSION_NONE;
+}
+
+mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
+{
+    mt_status_t st;
+
+    if (m->state == MT_MISSION_RUNNING) {
+        *bad = MT_MISSION_NONE;
+        return MT_E_STATE;
+    }
+    st = mt_mission_check(m, cmds, n, bad);
+    if (st != MT_OK) {
+        return st;
+    }
+    apply(m, cmds, n);
+    return MT_OK;
+}
+
+/* ------------------------------------------------------------ execution walk */
+
+/* Where a walk goes from a jump at p, without counting. */
+/*@ requires MtMissionInv(m);
+    requires MtMissionIdx(m, p) && m->kind[p] == MT_MISSION_KIND_JUMP;
+    assigns \nothing;
+    ensures 1 <= \result <= m->total;
+*/
+static uint16_t jump_peek(const mt_mission_t *m, uint16_t p)
+{
+    if ((m->repeat[p] < 0) || (m->count[p] < m->repeat[p])) {
+        return m->target[p];
+    }
+    return (uint16_t)(p + 1u);
+}
+
+/* Where a walk goes from a jump at p, counting: taken r times, then fall
+ * through and reset. */
+/*@ requires MtMissionInv(m);
+    requires MtMissionIdx(m, p) && m->kind[p] == MT_MISSION_KIND_JUMP;
+    assigns m->count[p];
+    ensures MtMissionInv(m);
+    ensures 1 <= \result <= m->total;
+    ensures counter_bound: m->repeat[p] >= 0 ==> 0 <= m->count[p] <= m->repeat[p];
+*/
+static uint16_t jump_take(mt_mission_t *m, uint16_t p)
+{
+    if (m->repeat[p] < 0) {
+        return m->target[p];
+    }
+    if (m->count[p] < m->repeat[p]) {
+        m->count[p]++;
+        return m->target[p];
+    }
+    m->count[p] = 0;
+    return (uint16_t)(p + 1u);
+}
+
+mt_status_t mt_mission_next_nav(const mt_mission_t *m, uint16_t from, uint16_t *out)
+{
+    uint16_t p = from;
+    uint32_t steps;
+
+    *out = MT_MISSION_NONE;
+    if ((from < 1u) || (from >= m->total)) {
+        return MT_E_INVALID;
+    }
+    /*@ loop invariant 0 <= steps <= m->total;
+        loop invariant 1 <= p <= m->total;
+        loop invariant *out == MT_MISSION_NONE;
+        loop assigns steps, p;
+        loop variant m->total - steps;
+    */
+    for (steps = 0u; steps < m->total; steps++) {
+        if (p >= m->total) {
+            return MT_E_EMPTY;
+        }
+        if (m->kind[p] == MT_MISSION_KIND_NAV) {
+            *out = p;
+            return MT_OK;
+        }
+        if (m->kind[p] == MT_MISSION_KIND_JUMP) {
+            p = jump_peek(m, p);
+        } else {
+            p++;
+        }
+    }
+    return MT_E_MISSION_LOOP;
+}
+
+/* Move the walk from wpos, counting jumps, to the first nav command (or also
+ * the first do command when stop_at_do); returns its index, or total at the
+ * end. Bounded by the command count. */
+/*@ requires MtMissionInv(m) && m->total >= 2;
+    assigns m->wpos, m->count[0 .. m->total - 1];
+    ensures MtMissionInv(m);
+    ensures 1 <= \result <= m->total && m->wpos == \result;
+    ensures \result < m->total ==> m->kind[\result] == MT_MISSION_KIND_NAV ||
+        (stop_at_do != 0 && m->kind[\result] == MT_MISSION_KIND_DO);
+*/
+static uint16_t walk(mt_mission_t *m, int stop_at_do)
+{
+    uint16_t p = m->wpos;
+    uint32_t steps;
+
+    /*@ loop invariant 0 <= steps <= m->total;
+        loop invariant 1 <= p <= m->total;
+        loop invariant MtMissionInv(m);
+        loop assigns steps, p, m->count[0 .. m->total - 1];
+        loop variant m->total - steps;
+    */
+    for (steps = 0u; steps < m->total; steps++) {
+        if (p >= m->total) {
+            break;
+        }
+        if ((m->kind[p] == MT_MISSION_KIND_NAV) ||
+            ((stop_at_do != 0) && (m->kind[p] == MT_MISSION_KIND_DO))) {
+            m->wpos = p;
+            return p;
+        }
+        if (m->kind[p] == MT_MISSION_KIND_JUMP) {
+            p = jump_take(m, p);
+        } else {
+            p++;
+        }
+    }
+    m->wpos = m->total;
+    return m->total;
+}
+
+/* Transition into COMPLETE: the only call of the complete callback. */
+/*@ requires MtMissionInv(m) && m->state == MT_MISSION_RUNNING;
+    assigns m->state, m->nav, m->do_cmd, m->do_done, m->completions, MtPortNow;
+    ensures MtMissionInv(m);
+    ensures m->state == MT_MISSION_COMPLETE && m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+    ensures complete_once: m->completions == \old(m->completions) + 1 || \old(m->completions) == 0xFFFFFFFF;
+*/
+static void finish(mt_mission_t *m)
+{
+    m->state = MT_MISSION_COMPLETE;
+    m->nav = MT_MISSION_NONE;
+    m->do_cmd = MT_MISSION_NONE;
+    m->do_done = 0u;
+    if (m->completions < 0xFFFFFFFFu) {
+        m->completions++;
+    }
+    mt_mission_invoke_done(m->complete_fn, m->ctx);
+}
+
+/* The active nav command completed (or refused to start): drop the do
+ * command, move the walk past the nav command. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && m->nav != MT_MISSION_NONE;
+    assigns m->do_cmd, m->do_done, m->prev_nav, m->nav, m->wpos, m->count[0 .. m->total - 1];
+    ensures MtMissionInv(m);
+    ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+*/
+static void nav_done(mt_mission_t *m)
+{
+    uint16_t r;
+
+    m->do_cmd = MT_MISSION_NONE;
+    m->do_done = 0u;
+    m->prev_nav = m->nav;
+    m->nav = MT_MISSION_NONE;
+    r = walk(m, 0);
+    if (r < m->total) {
+        m->wpos = (uint16_t)(r + 1u);
+    }
+}
+
+/* Load the next nav command (none is active): one start attempt; a refused
+ * start consumes the command; the end of the walk completes the mission. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
+    requires m->nav == MT_MISSION_NONE;
+    assigns m->state, m->nav, m->do_cmd, m->do_done, m->prev_nav, m->wpos, m->completions,
+            m->count[0 .. m->total - 1], MtPortNow;
+    ensures MtMissionInv(m);
+    ensures m->state == MT_MISSION_RUNNING || m->state == MT_MISSION_COMPLETE;
+    ensures complete_once: m->completions == \old(m->completions) + (m->state == MT_MISSION_COMPLETE ? 1 : 0) ||
+        \old(m->completions) == 0xFFFFFFFF;
+*/
+static void advance(mt_mission_t *m)
+{
+    uint16_t n = MT_MISSION_NONE;
+
+    m->do_cmd = MT_MISSION_NONE;
+    m->do_done = 0u;
+    if (mt_mission_next_nav(m, m->wpos, &n) != MT_OK) {
+        finish(m);
+        return;
+    }
+    if (mt_mission_invoke_cmd(m->start_fn, m->ctx, n, &m->cmd[n])) {
+        m->nav = n;
+    } else {
+        m->nav = n;
+        nav_done(m);
+    }
+}
+
+/*@ requires MtMissionInv(m) && m->total >= 2;
+    assigns m->count[0 .. m->total - 1], m->wpos, m->nav, m->do_cmd, m->do_done, m->prev_nav;
+    ensures MtMissionInv(m);
+    ensures m->wpos == 1 && m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+*/
+static void rewind(mt_mission_t *m)
+{
+    uint16_t i;
+
+    /*@ loop invariant 0 <= i <= m->total;
+        loop invariant \forall integer j; 0 <= j < i ==> m->count[j] == 0;
+        loop assigns i, m->count[0 .. m->total - 1];
+        loop variant m->total - i;
+    */
+    for (i = 0u; i < m->total; i++) {
+        m->count[i] = 0;
+    }
+    m->wpos = 1u;
+    m->nav = MT_MISSION_NONE;
+    m->do_cmd = MT_MISSION_NONE;
+    m->do_done = 0u;
+    m->prev_nav = MT_MISSION_NONE;
+}
+
+mt_status_t mt_mission_start(mt_mission_t *m)
+{
+    if (m->total < 2u) {
+        return MT_E_EMPTY;
+    }
+    rewind(m);
+    m->state = MT_MISSION_RUNNING;
+    advance(m);
+    return MT_OK;
+}
+
+mt_status_t mt_mission_stop(mt_mission_t *m)
+{
+    if (m->state != MT_MISSION_RUNNING) {
+        return MT_E_STATE;
+    }
+    m->state = MT_MISSION_STOPPED;
+    return MT_OK;
+}
+
+/* Start the active nav command again; a refusal completes it and loads the next. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
+    requires m->nav != MT_MISSION_NONE;
+    assigns m->state, m->nav, m->do_cmd, m->do_done, m->prev_nav, m->wpos, m->completions,
+            m->count[0 .. m->total - 1], MtPortNow;
+    ensures MtMissionInv(m);
+    ensures m->state == MT_MISSION_RUNNING || m->state == MT_MISSION_COMPLETE;
+*/
+static void restart_nav(mt_mission_t *m)
+{
+    if (!mt_mission_invoke_cmd(m->start_fn, m->ctx, m->nav, &m->cmd[m->nav])) {
+        nav_done(m);
+        advance(m);
+    }
+}
+
+mt_status_t mt_mission_resume(mt_mission_t *m)
+{
+    if (m->state == MT_MISSION_RUNNING) {
+        return MT_E_STATE;
+    }
+    if (m->total < 2u) {
+        return MT_E_EMPTY;
+    }
+    if (m->state == MT_MISSION_COMPLETE) {
+        return mt_mission_start(m);
+    }
+    m->state = MT_MISSION_RUNNING;
+    if (m->nav == MT_MISSION_NONE) {
+        advance(m);
+        return MT_OK;
+    }
+    restart_nav(m);
+    if ((m->state == MT_MISSION_RUNNING) && (m->do_cmd != MT_MISSION_NONE)) {
+        if (!mt_mission_invoke_cmd(m->start_fn, m->ctx, m->do_cmd, &m->cmd[m->do_cmd])) {
+            m->do_cmd = MT_MISSION_NONE;
+        }
+    }
+    return MT_OK;
+}
+
+mt_status_t mt_mission_set_current(mt_mission_t *m, uint16_t i)
+{
+    if (m->total < 2u) {
+        return MT_E_EMPTY;
+    }
+    if (i >= m->total) {
+        return MT_E_INVALID;
+    }
+    if ((i == 0u) || (m->state == MT_MISSION_COMPLETE)) {
+        rewind(m);
+    }
+    m->nav = MT_MISSION_NONE;
+    m->do_cmd = MT_MISSION_NONE;
+    m->do_done = 0u;
+    m->wpos = (i == 0u) ? 1u : i;
+    if (m->state == MT_MISSION_RUNNING) {
+        advance(m);
+    } else {
+        m->state = MT_MISSION_STOPPED;
+    }
+    return MT_OK;
+}
+
+mt_status_t mt_mission_restart_current(mt_mission_t *m)
+{
+    if ((m->state != MT_MISSION_RUNNING) || (m->nav == MT_MISSION_NONE)) {
+        return MT_E_STATE;
+    }
+    restart_nav(m);
+    return MT_OK;
+}
+
+/* Do cursor: verify the active do command, or start the next one before the
+ * active nav command. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
+    requires m->nav != MT_MISSION_NONE;
+    assigns m->do_cmd, m->do_done, m->wpos, m->count[0 .. m->total - 1], MtPortNow;
+    ensures MtMissionInv(m);
+*/
+static void do_step(mt_mission_t *m)
+{
+    uint16_t r;
+
+    if (m->do_cmd != MT_MISSION_NONE) {
+        if (mt_mission_invoke_cmd(m->verify_fn, m->ctx, m->do_cmd, &m->cmd[m->do_cmd])) {
+            m->do_cmd = MT_MISSION_NONE;
+        }
+        return;
+    }
+    if (m->do_done != 0u) {
+        return;
+    }
+    r = walk(m, 1);
+    if ((r < m->total) && (m->kind[r] == MT_MISSION_KIND_DO)) {
+        m->wpos = (uint16_t)(r + 1u);
+        if (mt_mission_invoke_cmd(m->start_fn, m->ctx, r, &m->cmd[r])) {
+            m->do_cmd = r;
+        }
+    } else {
+        m->do_done = 1u;
+    }
+}
+
+mt_status_t mt_mission_update(mt_mission_t *m)
+{
+    if (m->state != MT_MISSION_RUNNING) {
+        return MT_E_STATE;
+    }
+    if (m->nav == MT_MISSION_NONE) {
+        advance(m);
+    } else if (mt_mission_invoke_cmd(m->verify_fn, m->ctx, m->nav, &m->cmd[m->nav])) {
+        nav_done(m);
+        advance(m);
+    }
+    if ((m->state == MT_MISSION_RUNNING) && (m->nav != MT_MISSION_NONE)) {
+        do_step(m);
+    }
+    return MT_OK;
+}
+
+mt_status_t mt_mission_get(const mt_mission_t *m, uint16_t i, mt_mission_cmd_t *out, bool *is_current)
+{
+    if (i >= m->total) {
+        return MT_E_INVALID;
+    }
+    *out = m->cmd[i];
+    *is_current = (i == m->nav);
+    return MT_OK;
+}
+
+int32_t mt_mission_jump_count(const mt_mission_t *m, uint16_t i)
+{
+    if ((i < 1u) || (i >= m->total) || (m->kind[i] != MT_MISSION_KIND_JUMP)) {
+        return 0;
+    }
+    return (int32_t)m->count[i];
+}
