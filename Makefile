@@ -24,6 +24,10 @@ help:
 	@echo "make lint       cppcheck (MISRA C:2012 addon) and clang-tidy over kernel/"
 	@echo "make demo       run a task table on the host port and print its statistics"
 	@echo "make clean"
+	@echo "make mission-tool   build/mt-mission (check QGC WPL 110 mission files, print the plan)"
+	@echo "make test-mission   mission tests (gcc, ASan+UBSan) and mt-mission over tests/missions"
+	@echo "make fuzz           libFuzzer targets (clang, ASan+UBSan), short run (FUZZ_SECONDS)"
+	@echo "make wp-mission     Frama-C/WP (RTE, smoke tests) over kernel/src/mission.c"
 
 # ---------------------------------------------------------------- host builds
 # $(call host_lib,NAME,CC,EXTRA_CFLAGS)
@@ -63,9 +67,11 @@ TEST_HDR := $(wildcard tests/*.h)
 
 # $(call test_bin,NAME,CXX,FLAGS)
 define test_bin
-$(BUILD)/$(1)/mt_tests: $(TEST_SRC) $(TEST_HDR) $(BUILD)/$(1)/libmt.a $(BUILD)/$(1)/libmt_posix.a
-	$(2) $(WARN_CXX) $(3) $(KERNEL_INC) -Ihal_posix -Itests $(TEST_SRC) \
-	    $(BUILD)/$(1)/libmt_posix.a $(BUILD)/$(1)/libmt.a -lgtest -lgtest_main -pthread -o $$@
+$(BUILD)/$(1)/mt_tests: $(TEST_SRC) $(TEST_HDR) $(BUILD)/$(1)/libmt.a $(BUILD)/$(1)/libmt_posix.a \
+                        $(BUILD)/$(1)/libmt_mission_host.a
+	$(2) $(WARN_CXX) $(3) $(KERNEL_INC) -Ihal_posix -Itests -Itools/mission $(TEST_SRC) \
+	    $(BUILD)/$(1)/libmt_mission_host.a $(BUILD)/$(1)/libmt_posix.a $(BUILD)/$(1)/libmt.a \
+	    -lgtest -lgtest_main -pthread -lm -o $$@
 endef
 $(eval $(call test_bin,gcc,g++,-O2 -g))
 $(eval $(call test_bin,clang,clang++,-O2 -g))
@@ -132,3 +138,84 @@ clean:
 -include tla/tla.mk
 -include bench/bench.mk
 -include hal_chibios/mk/targets.mk
+
+# ---------------------------------------------------------------- mission (sequencer, files, tool)
+MISSION_HOST_SRC := $(wildcard tools/mission/wpl.c tools/mission/report.c)
+MISSION_TEST_SRC := $(wildcard tests/test_mission*.cpp)
+WARN_HOST := -std=c11 -Wall -Wextra -Wshadow -Wundef -Wformat=2 -Werror
+
+# $(call mission_host_lib,NAME,CC,FLAGS): the file layer for one test build
+define mission_host_lib
+$(BUILD)/$(1)/obj/mission/%.o: tools/mission/%.c $$(wildcard tools/mission/*.h kernel/include/mt/*.h)
+	@mkdir -p $$(@D)
+	$(2) $(WARN_HOST) $(3) $(KERNEL_INC) -Itools/mission -c $$< -o $$@
+$(BUILD)/$(1)/libmt_mission_host.a: $(patsubst tools/mission/%.c,$(BUILD)/$(1)/obj/mission/%.o,$(MISSION_HOST_SRC))
+	@mkdir -p $$(@D)
+	ar rcs $$@ $$^
+endef
+$(eval $(call mission_host_lib,gcc,gcc,-O2 -g))
+$(eval $(call mission_host_lib,clang,clang,-O2 -g))
+$(eval $(call mission_host_lib,asan,clang,$(SAN_ASAN)))
+$(eval $(call mission_host_lib,ubsan,clang,$(SAN_UBSAN)))
+$(eval $(call mission_host_lib,tsan,clang,$(SAN_TSAN)))
+$(eval $(call mission_host_lib,cov,gcc,-O0 -g --coverage))
+$(eval $(call host_lib,asanubsan,clang,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
+$(eval $(call mission_host_lib,asanubsan,clang,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
+
+.PHONY: mission-tool test-mission fuzz wp-mission
+mission-tool: $(BUILD)/mt-mission
+$(BUILD)/mt-mission: tools/mission/main.c $(BUILD)/gcc/libmt_mission_host.a $(BUILD)/gcc/libmt.a
+	gcc $(WARN_HOST) -O2 -g $(KERNEL_INC) -Itools/mission $< $(BUILD)/gcc/libmt_mission_host.a \
+	    $(BUILD)/gcc/libmt.a -lm -o $@
+
+# $(call mission_test_bin,NAME,CXX,FLAGS)
+define mission_test_bin
+$(BUILD)/$(1)/mt_mission_tests: $(MISSION_TEST_SRC) tests/mission_test_util.h $(BUILD)/$(1)/libmt.a \
+                                $(BUILD)/$(1)/libmt_mission_host.a
+	$(2) $(WARN_CXX) $(3) $(KERNEL_INC) -Itests -Itools/mission $(MISSION_TEST_SRC) \
+	    $(BUILD)/$(1)/libmt_mission_host.a $(BUILD)/$(1)/libmt.a -lgtest -lgtest_main -pthread -lm -o $$@
+endef
+$(eval $(call mission_test_bin,gcc,g++,-O2 -g))
+$(eval $(call mission_test_bin,asanubsan,clang++,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
+
+test-mission: $(BUILD)/gcc/mt_mission_tests $(BUILD)/asanubsan/mt_mission_tests $(BUILD)/mt-mission
+	$(BUILD)/gcc/mt_mission_tests --gtest_brief=1
+	ASAN_OPTIONS=detect_leaks=1 $(BUILD)/asanubsan/mt_mission_tests --gtest_brief=1
+	@set -e; for f in tests/missions/*.waypoints; do \
+	    $(BUILD)/mt-mission check --json $$f >/dev/null || { echo "mt-mission: $$f should be valid"; exit 1; }; \
+	done; \
+	for f in tests/missions/bad/*.waypoints; do \
+	    rc=0; $(BUILD)/mt-mission check $$f >/dev/null || rc=$$?; \
+	    [ $$rc -eq 1 ] || { echo "mt-mission: $$f should be invalid (exit 1), got $$rc"; exit 1; }; \
+	done; echo "mt-mission: tests/missions/*.waypoints valid, tests/missions/bad/* rejected"
+
+# libFuzzer (clang). FUZZ_SECONDS is the time per target (3 targets).
+FUZZ_SECONDS ?= 10
+FUZZ_FLAGS := -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+FUZZ_TARGETS := fuzz_wpl fuzz_sequencer fuzz_roundtrip
+$(BUILD)/fuzz/%: fuzz/mission/%.c $(MISSION_HOST_SRC) $(wildcard tools/mission/*.h) kernel/src/mission.c \
+                 kernel/src/mission_invoke.c kernel/src/status.c $(wildcard kernel/include/mt/*.h)
+	@mkdir -p $(@D)
+	clang $(FUZZ_FLAGS) $(KERNEL_INC) -Ikernel/src -Itools/mission $< $(MISSION_HOST_SRC) \
+	    kernel/src/mission.c kernel/src/mission_invoke.c kernel/src/status.c -lm -o $@
+fuzz: $(addprefix $(BUILD)/fuzz/,$(FUZZ_TARGETS))
+	@set -e; for t in $(FUZZ_TARGETS); do \
+	    mkdir -p $(BUILD)/fuzz/corpus/$$t; \
+	    echo "== $$t ($(FUZZ_SECONDS) s, seeds fuzz/mission/corpus/$$t)"; \
+	    $(BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -print_final_stats=1 \
+	        $(BUILD)/fuzz/corpus/$$t fuzz/mission/corpus/$$t 2>&1 | \
+	        grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|==[0-9]+==ERROR|SUMMARY)" || true; \
+	    test -z "$$(ls crash-* leak-* timeout-* 2>/dev/null)" || { echo "fuzz: $$t found a failure"; exit 1; }; \
+	done
+
+# Frama-C/WP over the mission module; gate on the JSON report.
+WP_FLAGS := -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast -wp-smoke-tests \
+            -wp-prover z3,cvc4 -wp-timeout 10 -wp-par $(NPROC)
+wp-mission:
+	@mkdir -p $(BUILD)/wp
+	@test -n "$$WHY3CONFIG" || { why3 config detect -C $(BUILD)/wp/why3.conf >/dev/null 2>&1; }
+	WHY3CONFIG=$${WHY3CONFIG:-$(BUILD)/wp/why3.conf} frama-c $(WP_FLAGS) \
+	    -cpp-extra-args="$(KERNEL_INC) -Ikernel/src" kernel/src/mission.c \
+	    -wp-report-json $(BUILD)/wp/mission.json > $(BUILD)/wp/mission.log 2>&1
+	@grep -E "^\[wp\] Proved goals" $(BUILD)/wp/mission.log
+	@tools/mission/wp_gate.py $(BUILD)/wp/mission.json

@@ -1,0 +1,346 @@
+// SPDX-License-Identifier: Apache-2.0
+// Mission files (tools/mission/wpl.h, report.h): QGC WPL 110 reading, writing,
+// round trip, precise errors, and the execution plan of `mt-mission check`.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "report.h"
+#include "wpl.h"
+
+#ifndef MT_MISSIONS_DIR
+#define MT_MISSIONS_DIR "tests/missions"
+#endif
+
+namespace {
+
+std::string ReadFile(const std::string &name)
+{
+    std::ifstream f(std::string(MT_MISSIONS_DIR) + "/" + name, std::ios::binary);
+    EXPECT_TRUE(f.good()) << name;
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+struct Parsed {
+    mt_status_t st;
+    std::vector<mt_wpl_item_t> items;
+    mt_wpl_error_t err;
+};
+
+Parsed Parse(const std::string &text)
+{
+    Parsed p;
+    p.items.resize(MT_CFG_MISSION_MAX_CMDS);
+    size_t n = 0;
+    p.st = mt_wpl_parse(text.data(), text.size(), p.items.data(), p.items.size(), &n, &p.err);
+    p.items.resize(n);
+    return p;
+}
+
+std::string Write(const std::vector<mt_wpl_item_t> &items)
+{
+    size_t need = mt_wpl_write(items.data(), items.size(), nullptr, 0) + 1;
+    std::string s(need, '\0');
+    mt_wpl_write(items.data(), items.size(), &s[0], need);
+    s.resize(need - 1);
+    return s;
+}
+
+bool SameItem(const mt_wpl_item_t &a, const mt_wpl_item_t &b)
+{
+    if (a.seq != b.seq || a.current != b.current || a.frame != b.frame || a.command != b.command ||
+        a.autocontinue != b.autocontinue) {
+        return false;
+    }
+    for (int f = 0; f < 7; f++) {
+        if (std::isnan(a.p[f]) != std::isnan(b.p[f])) {
+            return false;
+        }
+        if (!std::isnan(a.p[f]) && std::memcmp(&a.p[f], &b.p[f], sizeof(double)) != 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+struct Plan {
+    mt_status_t st;
+    std::vector<mt_plan_step_t> steps;
+    mt_report_t rep;
+    std::string Seq() const
+    {
+        std::string s;
+        for (const auto &p : steps) {
+            s += (s.empty() ? "" : " ") + std::string(p.kind == MT_MISSION_KIND_NAV ? "n" : "d") +
+                 std::to_string(p.index);
+        }
+        return s;
+    }
+};
+
+Plan Check(const std::string &text, size_t max_plan = 200)
+{
+    Plan p;
+    p.steps.resize(max_plan);
+    p.st = mt_report_check(text.data(), text.size(), p.steps.data(), max_plan, &p.rep);
+    p.steps.resize(p.rep.nplan);
+    return p;
+}
+
+const char *const kValidFiles[] = {"plain.waypoints",           "nested_jumps.waypoints",
+                                   "repeat_forever.waypoints",  "jump_tags.waypoints",
+                                   "do_only_stretches.waypoints", "conditions.waypoints",
+                                   "land_rtl.waypoints"};
+
+TEST(MissionFile, EveryValidFileRoundTripsExactly)
+{
+    for (const char *name : kValidFiles) {
+        Parsed a = Parse(ReadFile(name));
+        ASSERT_EQ(a.st, MT_OK) << name << ": " << a.err.reason;
+        ASSERT_GE(a.items.size(), 2u) << name;
+        std::string w1 = Write(a.items);
+        Parsed b = Parse(w1);
+        ASSERT_EQ(b.st, MT_OK) << name;
+        ASSERT_EQ(a.items.size(), b.items.size()) << name;
+        for (size_t i = 0; i < a.items.size(); i++) {
+            EXPECT_TRUE(SameItem(a.items[i], b.items[i])) << name << " item " << i;
+        }
+        EXPECT_EQ(Write(b.items), w1) << name; // the writer is a fixed point
+    }
+}
+
+TEST(MissionFile, RoundTripKeepsAwkwardValues)
+{
+    mt_wpl_item_t it{};
+    it.current = 1;
+    it.frame = 3;
+    it.command = 16;
+    it.autocontinue = 1;
+    it.p[0] = 0.1;
+    it.p[1] = 1e-300;
+    it.p[2] = -0.0;
+    it.p[3] = NAN;
+    it.p[4] = -35.123456789012345;
+    it.p[5] = 149.98765432109876;
+    it.p[6] = 1e308;
+    std::vector<mt_wpl_item_t> v{it};
+    Parsed b = Parse(Write(v));
+    ASSERT_EQ(b.st, MT_OK);
+    ASSERT_EQ(b.items.size(), 1u);
+    EXPECT_TRUE(SameItem(it, b.items[0]));
+    EXPECT_TRUE(std::signbit(b.items[0].p[2]));
+}
+
+TEST(MissionFile, AcceptsCrlfSpacesAndBlankLines)
+{
+    Parsed p = Parse("\r\nQGC WPL 110\r\n0 1 0 16 0 0 0 0 -35.3 149.1 584 1\r\n\r\n"
+                     "1  0  3  22  0 0 0 0 0 0 20 1\n");
+    ASSERT_EQ(p.st, MT_OK) << p.err.reason;
+    EXPECT_EQ(p.items.size(), 2u);
+    EXPECT_EQ(p.items[1].line, 5u);
+    EXPECT_EQ(p.items[1].command, 22u);
+}
+
+struct BadText {
+    const char *what;
+    std::string text;
+    mt_status_t st;
+    uint32_t line;
+    uint32_t field;
+    const char *reason_has;
+};
+
+TEST(MissionFile, MalformedTextGivesLineFieldAndReason)
+{
+    const std::string h = "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t-35\t149\t584\t1\n";
+    const std::vector<BadText> cases = {
+        {"empty", "", MT_E_MISSION_SYNTAX, 1, 0, "empty file"},
+        {"wrong header", "QGC WPL 120\n", MT_E_MISSION_SYNTAX, 1, 0, "header"},
+        {"header only after data", "0 1 0 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 1, 0, "header"},
+        {"missing fields", h + "1\t0\t3\t16\t0\t0\n", MT_E_MISSION_SYNTAX, 3, 7, "missing"},
+        {"extra field", h + "1 0 3 16 0 0 0 0 0 0 0 1 9\n", MT_E_MISSION_SYNTAX, 3, 13, "more than 12"},
+        {"bad seq", h + "x 0 3 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 1, "seq"},
+        {"seq gap", h + "5 0 3 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 1, "expected 1"},
+        {"current 2", h + "1 2 3 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 2, "current"},
+        {"negative frame", h + "1 0 -3 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 3, "frame"},
+        {"command word", h + "1 0 3 WP 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 4, "command"},
+        {"param garbage", h + "1 0 3 16 0 0 0 1.2.3 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 8, "param4"},
+        {"alt garbage", h + "1 0 3 16 0 0 0 0 0 0 12m 1\n", MT_E_MISSION_SYNTAX, 3, 11, "altitude"},
+        {"autocontinue", h + "1 0 3 16 0 0 0 0 0 0 0 yes\n", MT_E_MISSION_SYNTAX, 3, 12, "autocontinue"},
+        {"long token", h + "1 0 3 16 " + std::string(100, '1') + " 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3,
+         5, "too long"},
+        {"NUL", h + std::string("1 0 3 16 0\0 0 0 0 0 0 0 1\n", 26), MT_E_MISSION_SYNTAX, 3, 5, "NUL"},
+    };
+    for (const BadText &c : cases) {
+        Parsed p = Parse(c.text);
+        EXPECT_EQ(p.st, c.st) << c.what;
+        EXPECT_EQ(p.err.st, c.st) << c.what;
+        EXPECT_EQ(p.err.line, c.line) << c.what;
+        EXPECT_EQ(p.err.field, c.field) << c.what;
+        EXPECT_NE(std::string(p.err.reason).find(c.reason_has), std::string::npos)
+            << c.what << ": " << p.err.reason;
+    }
+}
+
+TEST(MissionFile, TooManyItems)
+{
+    std::string t = "QGC WPL 110\n";
+    for (unsigned i = 0; i <= MT_CFG_MISSION_MAX_CMDS; i++) {
+        t += std::to_string(i) + " 0 3 16 0 0 0 0 0 0 0 1\n";
+    }
+    Parsed p = Parse(t);
+    EXPECT_EQ(p.st, MT_E_MISSION_SIZE);
+    EXPECT_EQ(p.err.line, MT_CFG_MISSION_MAX_CMDS + 2u);
+}
+
+TEST(MissionFile, ConversionRules)
+{
+    mt_wpl_item_t it{};
+    it.command = 16;
+    it.frame = 3;
+    it.p[0] = 1.2345; // rounds to 1235 (3 decimals)
+    it.p[3] = NAN;
+    it.p[4] = -35.3632621;
+    it.p[5] = 149.1652374;
+    it.p[6] = 584.09;
+    mt_mission_cmd_t c{};
+    mt_wpl_error_t e{};
+    ASSERT_EQ(mt_wpl_to_cmd(&it, &c, &e), MT_OK);
+    EXPECT_EQ(c.param[0], 1235);
+    EXPECT_EQ(c.param[3], MT_MISSION_PARAM_NAN);
+    EXPECT_EQ(c.x, -353632621);
+    EXPECT_EQ(c.y, 1491652374);
+    EXPECT_EQ(c.z, 58409);
+    it.p[1] = INFINITY;
+    EXPECT_EQ(mt_wpl_to_cmd(&it, &c, &e), MT_E_MISSION_PARAM);
+    EXPECT_EQ(e.field, 6u);
+    it.p[1] = 3e6; // above 2147483.647
+    EXPECT_EQ(mt_wpl_to_cmd(&it, &c, &e), MT_E_MISSION_PARAM);
+    it.p[1] = 0;
+    it.p[6] = NAN;
+    EXPECT_EQ(mt_wpl_to_cmd(&it, &c, &e), MT_E_MISSION_PARAM);
+    EXPECT_EQ(e.field, 11u);
+    it.p[6] = 0;
+    it.p[4] = 300.0; // does not fit 1e-7 deg in int32
+    EXPECT_EQ(mt_wpl_to_cmd(&it, &c, &e), MT_E_MISSION_PARAM);
+    it.p[4] = 0;
+    it.command = 70000;
+    EXPECT_EQ(mt_wpl_to_cmd(&it, &c, &e), MT_E_MISSION_CMD);
+    it.command = 16;
+    it.frame = 300;
+    EXPECT_EQ(mt_wpl_to_cmd(&it, &c, &e), MT_E_MISSION_FRAME);
+    EXPECT_STREQ(mt_wpl_cmd_name(177), "DO_JUMP");
+    EXPECT_EQ(mt_wpl_cmd_name(12345), nullptr);
+}
+
+// ------------------------------------------------------------------ plans
+
+TEST(MissionPlan, PlainWaypoints)
+{
+    Plan p = Check(ReadFile("plain.waypoints"));
+    EXPECT_EQ(p.st, MT_OK);
+    EXPECT_TRUE(p.rep.valid);
+    EXPECT_EQ(p.Seq(), "n1 n2 n3 n4 n5");
+    EXPECT_FALSE(p.rep.truncated);
+}
+
+TEST(MissionPlan, NestedJumpsUnrolled)
+{
+    Plan p = Check(ReadFile("nested_jumps.waypoints"));
+    EXPECT_EQ(p.Seq(), "n1 n2 n3 n2 n3 n2 n3 n5 n2 n3 n2 n3 n2 n3 n5 n7");
+}
+
+TEST(MissionPlan, RepeatForeverIsTruncated)
+{
+    Plan p = Check(ReadFile("repeat_forever.waypoints"), 10);
+    EXPECT_TRUE(p.rep.valid);
+    EXPECT_TRUE(p.rep.truncated);
+    EXPECT_EQ(p.Seq(), "n1 n2 n4 d3 n2 n4 d3 n2 n4 d3");
+}
+
+TEST(MissionPlan, JumpTags)
+{
+    Plan p = Check(ReadFile("jump_tags.waypoints"));
+    EXPECT_EQ(p.Seq(), "n1 n3 n4 n3 n4 n7");
+}
+
+TEST(MissionPlan, DoOnlyStretchesRunAfterThePreviousNav)
+{
+    Plan p = Check(ReadFile("do_only_stretches.waypoints"));
+    EXPECT_EQ(p.Seq(), "n3 d1 d2 n7 d4 d5 d6 n9 d8");
+}
+
+TEST(MissionPlan, Conditions)
+{
+    Plan p = Check(ReadFile("conditions.waypoints"));
+    EXPECT_EQ(p.Seq(), "n1 n5 d2 d3 d4 n8 d6 d7 n9");
+}
+
+TEST(MissionPlan, LandAndRtl)
+{
+    Plan p = Check(ReadFile("land_rtl.waypoints"));
+    EXPECT_EQ(p.Seq(), "n1 n2 n3 n5 d4 n6");
+}
+
+struct BadFile {
+    const char *name;
+    mt_status_t st;
+    uint32_t line;
+    uint32_t index;
+};
+
+TEST(MissionPlan, InvalidFilesAreReportedWithLineAndIndex)
+{
+    const BadFile cases[] = {
+        {"bad/header.waypoints", MT_E_MISSION_SYNTAX, 1, MT_MISSION_NONE},
+        {"bad/missing_field.waypoints", MT_E_MISSION_SYNTAX, 3, MT_MISSION_NONE},
+        {"bad/not_a_number.waypoints", MT_E_MISSION_SYNTAX, 3, 1},
+        {"bad/seq_gap.waypoints", MT_E_MISSION_SYNTAX, 3, MT_MISSION_NONE},
+        {"bad/values.waypoints", MT_E_MISSION_PARAM, 3, 1},
+        {"bad/do_only_forever.waypoints", MT_E_MISSION_LOOP, 4, 2},
+        {"bad/jump_target.waypoints", MT_E_MISSION_JUMP, 4, 2},
+        {"bad/unknown_tag.waypoints", MT_E_MISSION_JUMP, 4, 2},
+    };
+    for (const BadFile &c : cases) {
+        Plan p = Check(ReadFile(c.name));
+        EXPECT_EQ(p.st, c.st) << c.name;
+        EXPECT_FALSE(p.rep.valid) << c.name;
+        ASSERT_GE(p.rep.nerr, 1u) << c.name;
+        EXPECT_EQ(p.rep.errors[0].line, c.line) << c.name;
+        EXPECT_EQ(p.rep.errors[0].index, c.index) << c.name;
+        EXPECT_TRUE(p.steps.empty()) << c.name;
+    }
+    // every problem of a file is listed, not just the first
+    Plan v = Check(ReadFile("bad/values.waypoints"));
+    ASSERT_EQ(v.rep.nerr, 4u);
+    EXPECT_EQ(v.rep.errors[1].st, MT_E_MISSION_PARAM);
+    EXPECT_EQ(v.rep.errors[2].st, MT_E_MISSION_LOCATION);
+    EXPECT_EQ(v.rep.errors[3].st, MT_E_MISSION_CMD);
+}
+
+TEST(MissionPlan, JsonShape)
+{
+    Plan p = Check(ReadFile("repeat_forever.waypoints"), 3);
+    std::string j(mt_report_json(&p.rep, nullptr, 0) + 1, '\0');
+    mt_report_json(&p.rep, &j[0], j.size());
+    EXPECT_EQ(j.rfind("{\"valid\": true, \"errors\": [], \"plan\": [{\"index\": 1, \"command\": 22, "
+                      "\"name\": \"TAKEOFF\", \"kind\": \"nav\"}",
+                      0),
+              0u)
+        << j;
+    EXPECT_NE(j.find("\"truncated\": true}"), std::string::npos);
+    Plan b = Check("QGC WPL 110\n0 1 0 16 0 0 0 0 0 0 0 1\n1 0 3 16 \"x 0 0 0 0 0 0 1\n");
+    std::string k(mt_report_json(&b.rep, nullptr, 0) + 1, '\0');
+    mt_report_json(&b.rep, &k[0], k.size());
+    EXPECT_NE(k.find("\\\"x"), std::string::npos) << k; // quotes escaped
+    EXPECT_NE(k.find("\"valid\": false"), std::string::npos);
+}
+
+} // namespace

@@ -1,0 +1,390 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file wpl.c
+ * @brief QGC WPL 110 reader, writer and float-to-kernel conversion (see wpl.h).
+ */
+#include "wpl.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define WPL_FIELDS 12u
+#define WPL_TOKEN_MAX 64u
+
+static void set_err(mt_wpl_error_t *err, mt_status_t st, uint32_t line, uint32_t field, uint32_t index,
+                    const char *fmt, ...) __attribute__((format(printf, 6, 7)));
+static void set_err(mt_wpl_error_t *err, mt_status_t st, uint32_t line, uint32_t field, uint32_t index,
+                    const char *fmt, ...)
+{
+    va_list ap;
+
+    if (err == NULL) {
+        return;
+    }
+    err->st = st;
+    err->line = line;
+    err->field = field;
+    err->index = index;
+    va_start(ap, fmt);
+    vsnprintf(err->reason, sizeof err->reason, fmt, ap);
+    va_end(ap);
+}
+
+static const char *const k_field_names[WPL_FIELDS] = {
+    "seq", "current", "frame", "command", "param1", "param2", "param3", "param4",
+    "x (latitude)", "y (longitude)", "z (altitude)", "autocontinue"};
+
+static int is_space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+/* Unsigned decimal integer, whole token, value <= max. */
+static int parse_uint(const char *tok, uint32_t max, uint32_t *out)
+{
+    uint64_t v = 0u;
+    size_t i;
+
+    if (tok[0] == '\0') {
+        return 0;
+    }
+    for (i = 0u; tok[i] != '\0'; i++) {
+        if (tok[i] < '0' || tok[i] > '9') {
+            return 0;
+        }
+        v = v * 10u + (uint64_t)(tok[i] - '0');
+        if (v > max) {
+            return 0;
+        }
+    }
+    *out = (uint32_t)v;
+    return 1;
+}
+
+/* Decimal floating-point number (strtod syntax, also nan/inf), whole token. */
+static int parse_double(const char *tok, double *out)
+{
+    char *end = NULL;
+    double v;
+
+    if (tok[0] == '\0') {
+        return 0;
+    }
+    errno = 0;
+    v = strtod(tok, &end);
+    if (end == tok || *end != '\0') {
+        return 0;
+    }
+    if (errno == ERANGE && isinf(v) == 0 && v != 0.0) {
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, size_t cap, size_t *n,
+                         mt_wpl_error_t *err)
+{
+    size_t pos = 0u;
+    uint32_t line = 0u;
+    int header_seen = 0;
+
+    *n = 0u;
+    set_err(err, MT_OK, 0u, 0u, MT_MISSION_NONE, "ok");
+    while (pos < len) {
+        size_t start = pos;
+        size_t end;
+        size_t p;
+        char tok[WPL_FIELDS][WPL_TOKEN_MAX];
+        uint32_t nt = 0u;
+        mt_wpl_item_t it;
+        uint32_t f;
+
+        while (pos < len && text[pos] != '\n') {
+            pos++;
+        }
+        end = pos;
+        if (pos < len) {
+            pos++; /* the newline */
+        }
+        line++;
+        /* tokenise the line [start, end) */
+        p = start;
+        for (;;) {
+            size_t k = 0u;
+            while (p < end && is_space(text[p])) {
+                p++;
+            }
+            if (p >= end) {
+                break;
+            }
+            if (text[p] == '\0') {
+                set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE, "NUL byte in the file");
+                return MT_E_MISSION_SYNTAX;
+            }
+            if (!header_seen) {
+                break; /* the header is checked as a whole below */
+            }
+            if (nt >= WPL_FIELDS) {
+                set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE,
+                        "more than %u fields", (unsigned)WPL_FIELDS);
+                return MT_E_MISSION_SYNTAX;
+            }
+            while (p < end && !is_space(text[p])) {
+                if (text[p] == '\0') {
+                    set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE, "NUL byte in the file");
+                    return MT_E_MISSION_SYNTAX;
+                }
+                if (k + 1u >= WPL_TOKEN_MAX) {
+                    set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE, "%s: field too long",
+                            k_field_names[nt]);
+                    return MT_E_MISSION_SYNTAX;
+                }
+                tok[nt][k++] = text[p++];
+            }
+            tok[nt][k] = '\0';
+            nt++;
+        }
+        if (!header_seen) {
+            /* first non-blank line: the header */
+            size_t a = start;
+            size_t b = end;
+            static const char hdr[] = "QGC WPL 110";
+            while (a < b && is_space(text[a])) {
+                a++;
+            }
+            while (b > a && is_space(text[b - 1u])) {
+                b--;
+            }
+            if (a == b) {
+                continue; /* blank line before the header */
+            }
+            if ((b - a) != sizeof hdr - 1u || memcmp(text + a, hdr, sizeof hdr - 1u) != 0) {
+                set_err(err, MT_E_MISSION_SYNTAX, line, 0u, MT_MISSION_NONE,
+                        "missing header: expected \"QGC WPL 110\"");
+                return MT_E_MISSION_SYNTAX;
+            }
+            header_seen = 1;
+            continue;
+        }
+        if (nt == 0u) {
+            continue; /* blank line */
+        }
+        if (nt < WPL_FIELDS) {
+            set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE,
+                    "%s: missing (a line has 12 fields, found %u)", k_field_names[nt], (unsigned)nt);
+            return MT_E_MISSION_SYNTAX;
+        }
+        memset(&it, 0, sizeof it);
+        it.line = line;
+        if (!parse_uint(tok[0], 0xFFFFFFFFu, &it.seq)) {
+            set_err(err, MT_E_MISSION_SYNTAX, line, 1u, MT_MISSION_NONE, "seq: not an unsigned integer: '%s'",
+                    tok[0]);
+            return MT_E_MISSION_SYNTAX;
+        }
+        if (it.seq != (uint32_t)*n) {
+            set_err(err, MT_E_MISSION_SYNTAX, line, 1u, MT_MISSION_NONE, "seq: expected %u, found %u",
+                    (unsigned)*n, (unsigned)it.seq);
+            return MT_E_MISSION_SYNTAX;
+        }
+        if (!parse_uint(tok[1], 1u, &it.current)) {
+            set_err(err, MT_E_MISSION_SYNTAX, line, 2u, (uint32_t)*n, "current: not 0 or 1: '%s'", tok[1]);
+            return MT_E_MISSION_SYNTAX;
+        }
+        if (!parse_uint(tok[2], 0xFFFFFFFFu, &it.frame)) {
+            set_err(err, MT_E_MISSION_SYNTAX, line, 3u, (uint32_t)*n, "frame: not an unsigned integer: '%s'",
+                    tok[2]);
+            return MT_E_MISSION_SYNTAX;
+        }
+        if (!parse_uint(tok[3], 0xFFFFFFFFu, &it.command)) {
+            set_err(err, MT_E_MISSION_SYNTAX, line, 4u, (uint32_t)*n,
+                    "command: not an unsigned integer: '%s'", tok[3]);
+            return MT_E_MISSION_SYNTAX;
+        }
+        for (f = 0u; f < 7u; f++) {
+            if (!parse_double(tok[4u + f], &it.p[f])) {
+                set_err(err, MT_E_MISSION_SYNTAX, line, 5u + f, (uint32_t)*n, "%s: not a number: '%s'",
+                        k_field_names[4u + f], tok[4u + f]);
+                return MT_E_MISSION_SYNTAX;
+            }
+        }
+        if (!parse_uint(tok[11], 1u, &it.autocontinue)) {
+            set_err(err, MT_E_MISSION_SYNTAX, line, 12u, (uint32_t)*n, "autocontinue: not 0 or 1: '%s'",
+                    tok[11]);
+            return MT_E_MISSION_SYNTAX;
+        }
+        if (*n >= cap) {
+            set_err(err, MT_E_MISSION_SIZE, line, 0u, (uint32_t)*n, "more than %u items", (unsigned)cap);
+            return MT_E_MISSION_SIZE;
+        }
+        items[*n] = it;
+        (*n)++;
+    }
+    if (!header_seen) {
+        set_err(err, MT_E_MISSION_SYNTAX, line == 0u ? 1u : line, 0u, MT_MISSION_NONE,
+                "empty file: expected \"QGC WPL 110\"");
+        return MT_E_MISSION_SYNTAX;
+    }
+    return MT_OK;
+}
+
+/* Shortest %.*g rendering that reads back to exactly v. */
+static void fmt_double(char *buf, size_t cap, double v)
+{
+    int prec;
+
+    if (isnan(v)) {
+        snprintf(buf, cap, "nan");
+        return;
+    }
+    if (isinf(v)) {
+        snprintf(buf, cap, v < 0 ? "-inf" : "inf");
+        return;
+    }
+    for (prec = 1; prec <= 17; prec++) {
+        snprintf(buf, cap, "%.*g", prec, v);
+        if (strtod(buf, NULL) == v) {
+            return;
+        }
+    }
+}
+
+size_t mt_wpl_write(const mt_wpl_item_t *items, size_t n, char *out, size_t cap)
+{
+    size_t used = 0u;
+    size_t i;
+    int k;
+
+#define EMIT(...)                                                                                         \
+    do {                                                                                                  \
+        k = snprintf(used < cap ? out + used : NULL, used < cap ? cap - used : 0u, __VA_ARGS__);          \
+        if (k > 0) {                                                                                      \
+            used += (size_t)k;                                                                            \
+        }                                                                                                 \
+    } while (0)
+
+    EMIT("QGC WPL 110\n");
+    for (i = 0u; i < n; i++) {
+        const mt_wpl_item_t *it = &items[i];
+        char num[7][40];
+        int f;
+        for (f = 0; f < 7; f++) {
+            fmt_double(num[f], sizeof num[f], it->p[f]);
+        }
+        EMIT("%u\t%u\t%u\t%u\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%u\n", (unsigned)i, (unsigned)it->current,
+             (unsigned)it->frame, (unsigned)it->command, num[0], num[1], num[2], num[3], num[4], num[5],
+             num[6], (unsigned)it->autocontinue);
+    }
+#undef EMIT
+    return used;
+}
+
+/* round(v * scale) into int32, if finite and in range. */
+static int to_fixed(double v, double scale, double limit, int32_t *out)
+{
+    double s;
+
+    if (isfinite(v) == 0) {
+        return 0;
+    }
+    s = v * scale;
+    if (!(s > -limit && s < limit)) {
+        return 0;
+    }
+    *out = (int32_t)llround(s);
+    return 1;
+}
+
+mt_status_t mt_wpl_to_cmd(const mt_wpl_item_t *it, mt_mission_cmd_t *out, mt_wpl_error_t *err)
+{
+    static const char *const names[7] = {"param1", "param2", "param3", "param4", "x (latitude)",
+                                         "y (longitude)", "z (altitude)"};
+    uint32_t idx = it->seq;
+    int f;
+
+    memset(out, 0, sizeof *out);
+    if (it->command > 0xFFFFu) {
+        set_err(err, MT_E_MISSION_CMD, it->line, 4u, idx, "command: %u is not a MAV_CMD number",
+                (unsigned)it->command);
+        return MT_E_MISSION_CMD;
+    }
+    if (it->frame > 0xFFu) {
+        set_err(err, MT_E_MISSION_FRAME, it->line, 3u, idx, "frame: %u is not a MAV_FRAME number",
+                (unsigned)it->frame);
+        return MT_E_MISSION_FRAME;
+    }
+    out->id = (uint16_t)it->command;
+    out->frame = (uint8_t)it->frame;
+    out->options = (uint8_t)(it->autocontinue & 1u);
+    for (f = 0; f < 4; f++) {
+        if (isnan(it->p[f])) {
+            out->param[f] = MT_MISSION_PARAM_NAN;
+            continue;
+        }
+        if (!to_fixed(it->p[f], (double)MT_MISSION_MILLI, 2147483647.0, &out->param[f]) ||
+            out->param[f] == MT_MISSION_PARAM_NAN) {
+            set_err(err, MT_E_MISSION_PARAM, it->line, 5u + (uint32_t)f, idx,
+                    "%s: %s (limit: finite, |v| < 2147483.647)", names[f],
+                    isinf(it->p[f]) ? "infinite" : "out of range");
+            return MT_E_MISSION_PARAM;
+        }
+    }
+    for (f = 4; f < 7; f++) {
+        int32_t v = 0;
+        double scale = (f < 6) ? 1e7 : 100.0;
+        if (isnan(it->p[f]) || !to_fixed(it->p[f], scale, 2147483647.0, &v)) {
+            set_err(err, MT_E_MISSION_PARAM, it->line, 5u + (uint32_t)f, idx, "%s: %s", names[f],
+                    isnan(it->p[f]) ? "NaN is not allowed" : isinf(it->p[f]) ? "infinite" : "out of range");
+            return MT_E_MISSION_PARAM;
+        }
+        if (f == 4) {
+            out->x = v;
+        } else if (f == 5) {
+            out->y = v;
+        } else {
+            out->z = v;
+        }
+    }
+    return MT_OK;
+}
+
+typedef struct {
+    uint32_t id;
+    const char *name;
+} cmd_name_t;
+
+static const cmd_name_t k_names[] = {
+    {16, "WAYPOINT"}, {17, "LOITER_UNLIM"}, {18, "LOITER_TURNS"}, {19, "LOITER_TIME"},
+    {20, "RETURN_TO_LAUNCH"}, {21, "LAND"}, {22, "TAKEOFF"}, {30, "CONTINUE_AND_CHANGE_ALT"},
+    {31, "LOITER_TO_ALT"}, {82, "SPLINE_WAYPOINT"}, {83, "ALTITUDE_WAIT"}, {84, "VTOL_TAKEOFF"},
+    {85, "VTOL_LAND"}, {92, "GUIDED_ENABLE"}, {93, "DELAY"}, {94, "PAYLOAD_PLACE"},
+    {112, "CONDITION_DELAY"}, {113, "CONDITION_CHANGE_ALT"}, {114, "CONDITION_DISTANCE"},
+    {115, "CONDITION_YAW"}, {176, "DO_SET_MODE"}, {177, "DO_JUMP"}, {178, "DO_CHANGE_SPEED"},
+    {179, "DO_SET_HOME"}, {181, "DO_SET_RELAY"}, {182, "DO_REPEAT_RELAY"}, {183, "DO_SET_SERVO"},
+    {184, "DO_REPEAT_SERVO"}, {188, "DO_RETURN_PATH_START"}, {189, "DO_LAND_START"},
+    {191, "DO_GO_AROUND"}, {194, "DO_SET_REVERSE"}, {195, "DO_SET_ROI_LOCATION"},
+    {197, "DO_SET_ROI_NONE"}, {201, "DO_SET_ROI"}, {202, "DO_DIGICAM_CONFIGURE"},
+    {203, "DO_DIGICAM_CONTROL"}, {205, "DO_MOUNT_CONTROL"}, {206, "DO_SET_CAM_TRIGG_DIST"},
+    {207, "DO_FENCE_ENABLE"}, {208, "DO_PARACHUTE"}, {210, "DO_INVERTED_FLIGHT"}, {211, "DO_GRIPPER"},
+    {212, "DO_AUTOTUNE_ENABLE"}, {213, "NAV_SET_YAW_SPEED"}, {214, "DO_SET_RESUME_REPEAT_DIST"},
+    {215, "DO_SPRAYER"}, {216, "DO_SEND_SCRIPT_MESSAGE"}, {217, "DO_AUX_FUNCTION"},
+    {222, "DO_GUIDED_LIMITS"}, {223, "DO_ENGINE_CONTROL"}, {600, "JUMP_TAG"}, {601, "DO_JUMP_TAG"},
+    {1000, "DO_GIMBAL_MANAGER_PITCHYAW"}, {2000, "IMAGE_START_CAPTURE"}, {2001, "IMAGE_STOP_CAPTURE"},
+    {2500, "VIDEO_START_CAPTURE"}, {2501, "VIDEO_STOP_CAPTURE"}, {3000, "DO_VTOL_TRANSITION"},
+    {42702, "NAV_SCRIPT_TIME"}, {42703, "NAV_ATTITUDE_TIME"},
+};
+
+const char *mt_wpl_cmd_name(uint32_t id)
+{
+    size_t i;
+
+    for (i = 0u; i < sizeof k_names / sizeof k_names[0]; i++) {
+        if (k_names[i].id == id) {
+            return k_names[i].name;
+        }
+    }
+    return NULL;
+}
