@@ -34,6 +34,9 @@ typedef struct {
 #define NAV MT_MISSION_KIND_NAV
 #define DO MT_MISSION_KIND_DO
 
+uint8_t mt_mission_scratch_safe[MT_CFG_MISSION_MAX_CMDS];
+uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
+
 #define N_CMDS 61u
 
 /* Commands a vehicle needs (MAVLink common + ArduPilot mission subset). */
@@ -194,15 +197,16 @@ static int is_int(int32_t v)
 */
 static int repeat_ok(int32_t v)
 {
-    return ((is_int(v) != 0) && (v >= -MT_MISSION_MILLI) &&
-            (v <= MT_MISSION_REPEAT_MAX * MT_MISSION_MILLI))
-               ? 1
-               : 0;
+    if ((v < -1000) || (v > 32767000)) {
+        return 0;
+    }
+    return is_int(v);
 }
 
 /* Generic param rules from the table flags (params are never NaN here unless allowed). */
 /*@ requires \valid_read(c);
     assigns \nothing;
+    ensures \result == MT_OK || \result == MT_E_MISSION_PARAM;
 */
 static mt_status_t params_ok(const mt_mission_cmd_t *c, uint8_t flags)
 {
@@ -233,6 +237,7 @@ static mt_status_t params_ok(const mt_mission_cmd_t *c, uint8_t flags)
 /* Command-specific param rules. */
 /*@ requires \valid_read(c);
     assigns \nothing;
+    ensures \result == MT_OK || \result == MT_E_MISSION_PARAM;
 */
 static mt_status_t special_ok(const mt_mission_cmd_t *c)
 {
@@ -314,7 +319,7 @@ mt_status_t mt_mission_check_cmd(const mt_mission_cmd_t *cmds, uint16_t n, uint1
             return MT_E_MISSION_JUMP;
         }
         if (c->id == MT_MAV_CMD_DO_JUMP) {
-            if ((c->param[0] < MT_MISSION_MILLI) ||
+            if (((c->param[0] / MT_MISSION_MILLI) < 1) ||
                 ((c->param[0] / MT_MISSION_MILLI) >= (int32_t)n)) {
                 return MT_E_MISSION_JUMP;
             }
@@ -348,15 +353,14 @@ static uint16_t find_tag(const mt_mission_cmd_t *cmds, uint16_t n, int32_t tag)
 
 /* Whether every walk from index i reaches a nav command or the end, given the
  * marks of the other nodes (one relaxation step of the loop check). */
-/*@ requires MtMissionStaged(m, cmds, n);
+/*@ requires MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
     requires 1 <= i < n;
-    requires \valid_read(m->safe + (0 .. n - 1));
     assigns \nothing;
 */
-static uint8_t node_safe(const mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
+static uint8_t node_safe(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
 {
     uint16_t id = cmds[i].id;
-    uint8_t next = (i + 1u >= n) ? 1u : m->safe[i + 1u];
+    uint8_t next = (i + 1u >= n) ? 1u : mt_mission_scratch_safe[i + 1u];
     int32_t rep;
     uint8_t tgt;
 
@@ -364,7 +368,7 @@ static uint8_t node_safe(const mt_mission_t *m, const mt_mission_cmd_t *cmds, ui
         return (mt_mission_kind_of(id) == MT_MISSION_KIND_NAV) ? 1u : next;
     }
     rep = cmds[i].param[1];
-    tgt = m->safe[m->scratch_target[i]];
+    tgt = mt_mission_scratch_safe[mt_mission_scratch_target[i]];
     if (rep < 0) {
         return tgt;
     }
@@ -374,13 +378,14 @@ static uint8_t node_safe(const mt_mission_t *m, const mt_mission_cmd_t *cmds, ui
     return ((tgt != 0u) && (next != 0u)) ? 1u : 0u;
 }
 
-mt_status_t mt_mission_check(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
+mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
 {
     uint16_t i;
     uint32_t round;
     mt_status_t st;
     int changed;
 
+    (void)m; /* the active mission is not needed to check a candidate */
     *bad = 0u;
     if ((n < 1u) || (n > MT_CFG_MISSION_MAX_CMDS)) {
         return MT_E_MISSION_SIZE;
@@ -388,8 +393,8 @@ mt_status_t mt_mission_check(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint
     /* 1. every command on its own; jump targets into the scratch */
     /*@ loop invariant 0 <= i <= n;
         loop invariant \forall integer j; 1 <= j < i ==> MtMissionIsJumpId(cmds[j].id) ==>
-            1 <= m->scratch_target[j] < n && MtMissionRepeatOk(cmds[j].param[1]);
-        loop assigns i, m->scratch_target[0 .. n - 1], *bad;
+            1 <= mt_mission_scratch_target[j] < n && MtMissionRepeatOk(cmds[j].param[1]);
+        loop assigns i, st, mt_mission_scratch_target[0 .. n - 1], *bad;
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {
@@ -398,44 +403,44 @@ mt_status_t mt_mission_check(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint
             *bad = i;
             return st;
         }
-        m->scratch_target[i] = 0u;
+        mt_mission_scratch_target[i] = 0u;
         if ((i >= 1u) && (cmds[i].id == MT_MAV_CMD_DO_JUMP)) {
-            m->scratch_target[i] = (uint16_t)(cmds[i].param[0] / MT_MISSION_MILLI);
+            mt_mission_scratch_target[i] = (uint16_t)(cmds[i].param[0] / MT_MISSION_MILLI);
         } else if ((i >= 1u) && (cmds[i].id == MT_MAV_CMD_DO_JUMP_TAG)) {
             uint16_t t = find_tag(cmds, n, cmds[i].param[0]);
             if (t >= n) {
                 *bad = i;
                 return MT_E_MISSION_JUMP;
             }
-            m->scratch_target[i] = t;
+            mt_mission_scratch_target[i] = t;
         }
     }
     /* 2. loop check: mark the nodes from which every walk reaches a nav command or
      *    the end; a node never marked lies on, or leads into, a loop without a nav
      *    command. n rounds suffice (each round marks at least one new node). */
     /*@ loop invariant 0 <= i <= n;
-        loop assigns i, m->safe[0 .. n - 1];
+        loop assigns i, mt_mission_scratch_safe[0 .. n - 1];
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {
-        m->safe[i] = 0u;
+        mt_mission_scratch_safe[i] = 0u;
     }
     changed = 1;
     /*@ loop invariant 0 <= round <= n;
-        loop invariant MtMissionStaged(m, cmds, n);
-        loop assigns round, changed, i, m->safe[0 .. n - 1];
+        loop invariant MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
+        loop assigns round, changed, i, mt_mission_scratch_safe[0 .. n - 1];
         loop variant n - round;
     */
     for (round = 0u; (round < n) && (changed != 0); round++) {
         changed = 0;
         /*@ loop invariant 0 <= i < n;
-            loop invariant MtMissionStaged(m, cmds, n);
-            loop assigns i, changed, m->safe[0 .. n - 1];
+            loop invariant MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
+            loop assigns i, changed, mt_mission_scratch_safe[0 .. n - 1];
             loop variant i;
         */
         for (i = (uint16_t)(n - 1u); i >= 1u; i--) {
-            if ((m->safe[i] == 0u) && (node_safe(m, cmds, n, i) != 0u)) {
-                m->safe[i] = 1u;
+            if ((mt_mission_scratch_safe[i] == 0u) && (node_safe(cmds, n, i) != 0u)) {
+                mt_mission_scratch_safe[i] = 1u;
                 changed = 1;
             }
         }
@@ -445,7 +450,7 @@ mt_status_t mt_mission_check(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint
         loop variant n - i;
     */
     for (i = 1u; i < n; i++) {
-        if (m->safe[i] == 0u) {
+        if (mt_mission_scratch_safe[i] == 0u) {
             *bad = i;
             return MT_E_MISSION_LOOP;
         }
@@ -456,7 +461,7 @@ mt_status_t mt_mission_check(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint
 
 /* Make the checked list the active mission. Cannot fail. */
 /*@ requires MtMissionInv(m);
-    requires MtMissionStaged(m, cmds, n);
+    requires MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
     requires \separated(cmds + (0 .. n - 1), m);
     assigns m->cmd[0 .. n - 1], m->kind[0 .. n - 1], m->target[0 .. n - 1], m->repeat[0 .. n - 1],
             m->count[0 .. n - 1], m->total, m->generation, m->state, m->do_done, m->nav,
@@ -501,7 +506,7 @@ static void apply(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
         m->repeat[i] = 0;
         m->count[i] = 0;
         if (k == MT_MISSION_KIND_JUMP) {
-            m->target[i] = m->scratch_target[i];
+            m->target[i] = mt_mission_scratch_target[i];
             m->repeat[i] = (int16_t)(cmds[i].param[1] / MT_MISSION_MILLI);
         }
     }

@@ -141,15 +141,16 @@ typedef struct {
     uint16_t wpos;     /**< next index the execution walk visits (total: end) */
     uint16_t prev_nav; /**< last nav command that completed, or MT_MISSION_NONE */
     uint32_t completions; /**< times the complete callback was called */
-    /* validation scratch (never part of the active mission) */
-    uint8_t safe[MT_CFG_MISSION_MAX_CMDS];
-    uint16_t scratch_target[MT_CFG_MISSION_MAX_CMDS];
     /* vehicle callbacks */
     mt_mission_cmd_fn_t start_fn;
     mt_mission_cmd_fn_t verify_fn;
     mt_mission_done_fn_t complete_fn;
     void *ctx;
 } mt_mission_t;
+
+/** Validation work space of the module (not part of any mission object). */
+extern uint8_t mt_mission_scratch_safe[MT_CFG_MISSION_MAX_CMDS];
+extern uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
 
 /*@ predicate MtMissionIsJumpId(integer id) = id == MT_MAV_CMD_DO_JUMP || id == MT_MAV_CMD_DO_JUMP_TAG;
     predicate MtMissionIsCallbackId(integer id) = !MtMissionIsJumpId(id) && id != MT_MAV_CMD_JUMP_TAG;
@@ -184,11 +185,14 @@ typedef struct {
         MtMissionCursor(m, m->do_cmd, MT_MISSION_KIND_DO) &&
         (m->do_cmd != MT_MISSION_NONE ==> m->nav != MT_MISSION_NONE) &&
         (m->do_done == 0 || m->do_done == 1) &&
+        (m->state != MT_MISSION_STOPPED ==> m->total >= 2) &&
         (m->total == 0 ==> m->wpos == 0) &&
         (m->total >= 1 ==> 1 <= m->wpos <= m->total);
 
     predicate MtMissionInv(mt_mission_t *m) =
         \valid(m) && 0 <= m->total <= MT_CFG_MISSION_MAX_CMDS &&
+        \separated(m, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                   mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1)) &&
         m->start_fn != \null && m->verify_fn != \null && m->complete_fn != \null &&
         MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m) && MtMissionCursors(m);
 
@@ -196,15 +200,15 @@ typedef struct {
         1 <= n <= MT_CFG_MISSION_MAX_CMDS && \valid_read(c + (0 .. n - 1));
 
     predicate MtMissionRepeatOk(integer p) =
-        p % MT_MISSION_MILLI == 0 && -MT_MISSION_MILLI <= p <= MT_MISSION_REPEAT_MAX * MT_MISSION_MILLI;
+        p % 1000 == 0 && -1000 <= p <= 32767000;
 
     predicate MtMissionJumpCmdOk(mt_mission_cmd_t *c, integer n, integer i) =
         MtMissionIsJumpId(c[i].id) ==> MtMissionRepeatOk(c[i].param[1]);
 
-    predicate MtMissionStaged(mt_mission_t *m, mt_mission_cmd_t *c, integer n) =
+    predicate MtMissionStaged(uint16_t *tgt, mt_mission_cmd_t *c, integer n) =
         MtMissionCmdsIn(c, n) &&
         \forall integer i; 1 <= i < n ==> MtMissionIsJumpId(c[i].id) ==>
-            1 <= m->scratch_target[i] < n && MtMissionRepeatOk(c[i].param[1]);
+            1 <= tgt[i] < n && MtMissionRepeatOk(c[i].param[1]);
 
     predicate MtMissionActiveUnchanged{L1, L2}(mt_mission_t *m) =
         \at(m->total, L1) == \at(m->total, L2) &&
@@ -233,6 +237,8 @@ uint8_t mt_mission_kind_of(uint16_t id);
 
 /** Initialise an empty mission (no commands, STOPPED). */
 /*@ requires valid: \valid(m);
+    requires sep: \separated(m, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                             mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
     requires callbacks: start_fn != \null && verify_fn != \null && complete_fn != \null;
     assigns *m;
     ensures inv: MtMissionInv(m);
@@ -259,8 +265,10 @@ void mt_mission_init(mt_mission_t *m, mt_mission_cmd_fn_t start_fn, mt_mission_c
 mt_status_t mt_mission_check_cmd(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i);
 
 /** Check a whole candidate list: size, every command (mt_mission_check_cmd),
- *  jump tags, and that every loop contains a nav command. Writes only the
- *  validation scratch of m: the active mission is untouched.
+ *  jump tags, and that every loop contains a nav command. The mission object
+ *  is only read (its active mission is untouched); the work space is the
+ *  module's validation scratch, so checks and loads must not run in two
+ *  threads at once.
  *  @retval MT_OK (*bad = MT_MISSION_NONE)
  *  @retval MT_E_MISSION_SIZE (*bad = 0), or any status of mt_mission_check_cmd,
  *          or MT_E_MISSION_JUMP (unknown tag), MT_E_MISSION_LOOP, with *bad
@@ -269,21 +277,22 @@ mt_status_t mt_mission_check_cmd(const mt_mission_cmd_t *cmds, uint16_t n, uint1
     requires cmds: n < 1 || n > MT_CFG_MISSION_MAX_CMDS || MtMissionCmdsIn(cmds, n);
     requires sep: \separated(cmds + (0 .. n - 1), m) && \separated(bad, m, cmds + (0 .. n - 1));
     requires bad: \valid(bad);
-    assigns m->safe[0 .. MT_CFG_MISSION_MAX_CMDS - 1], m->scratch_target[0 .. MT_CFG_MISSION_MAX_CMDS - 1], *bad;
+    assigns mt_mission_scratch_safe[0 .. MT_CFG_MISSION_MAX_CMDS - 1],
+            mt_mission_scratch_target[0 .. MT_CFG_MISSION_MAX_CMDS - 1], *bad;
     ensures inv: MtMissionInv(m);
     ensures untouched: MtMissionActiveUnchanged{Pre, Post}(m);
     behavior ok:
       assumes 1 <= n <= MT_CFG_MISSION_MAX_CMDS;
       ensures located: \result == MT_OK <==> *bad == MT_MISSION_NONE;
       ensures in_range: \result != MT_OK ==> *bad < n;
-      ensures targets: \result == MT_OK ==> MtMissionStaged(m, cmds, n);
+      ensures targets: \result == MT_OK ==> MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
     behavior bad_size:
       assumes n < 1 || n > MT_CFG_MISSION_MAX_CMDS;
       ensures status: \result == MT_E_MISSION_SIZE && *bad == 0;
     complete behaviors;
     disjoint behaviors;
 */
-mt_status_t mt_mission_check(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad);
+mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad);
 
 /** Validate cmds[0 .. n-1], then make it the active mission (STOPPED, cursors
  *  at the start, counters zero, generation + 1).
@@ -295,7 +304,8 @@ mt_status_t mt_mission_check(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint
     requires cmds: n < 1 || n > MT_CFG_MISSION_MAX_CMDS || MtMissionCmdsIn(cmds, n);
     requires sep: \separated(cmds + (0 .. n - 1), m) && \separated(bad, m, cmds + (0 .. n - 1));
     requires bad: \valid(bad);
-    assigns *m, *bad;
+    assigns *m, *bad, mt_mission_scratch_safe[0 .. MT_CFG_MISSION_MAX_CMDS - 1],
+            mt_mission_scratch_target[0 .. MT_CFG_MISSION_MAX_CMDS - 1];
     ensures inv: MtMissionInv(m);
     behavior running:
       assumes m->state == MT_MISSION_RUNNING;
@@ -305,7 +315,7 @@ mt_status_t mt_mission_check(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint
       assumes m->state != MT_MISSION_RUNNING;
       ensures loaded: \result == MT_OK ==> m->total == n && m->state == MT_MISSION_STOPPED &&
           m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->wpos == 1 &&
-          m->generation == \old(m->generation) + 1;
+          (m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF);
       ensures rejected: \result != MT_OK ==> MtMissionActiveUnchanged{Pre, Post}(m);
     complete behaviors;
     disjoint behaviors;
@@ -445,7 +455,8 @@ mt_status_t mt_mission_restart_current(mt_mission_t *m);
       ensures status: \result == MT_OK;
       ensures state: m->state == MT_MISSION_RUNNING || m->state == MT_MISSION_COMPLETE;
       ensures same_mission: m->total == \old(m->total) && m->generation == \old(m->generation);
-      ensures complete_once: m->completions == \old(m->completions) + (m->state == MT_MISSION_COMPLETE ? 1 : 0);
+      ensures complete_once: m->completions == \old(m->completions) + (m->state == MT_MISSION_COMPLETE ? 1 : 0) ||
+          \old(m->completions) == 0xFFFFFFFF;
     behavior other:
       assumes m->state != MT_MISSION_RUNNING;
       ensures status: \result == MT_E_STATE;
@@ -484,7 +495,9 @@ mt_status_t mt_mission_next_nav(const mt_mission_t *m, uint16_t from, uint16_t *
     behavior ok:
       assumes i < m->total;
       ensures status: \result == MT_OK;
-      ensures copy: *out == m->cmd[i];
+      ensures copy: out->id == m->cmd[i].id && out->frame == m->cmd[i].frame &&
+          out->x == m->cmd[i].x && out->y == m->cmd[i].y && out->z == m->cmd[i].z &&
+          \forall integer k; 0 <= k < 4 ==> out->param[k] == m->cmd[i].param[k];
       ensures current: *is_current == (i == m->nav);
     behavior bad:
       assumes i >= m->total;
