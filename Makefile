@@ -27,7 +27,6 @@ help:
 	@echo "make mission-tool   build/mt-mission (check QGC WPL 110 mission files, print the plan)"
 	@echo "make test-mission   mission tests (gcc, ASan+UBSan) and mt-mission over tests/missions"
 	@echo "make fuzz           libFuzzer targets (clang, ASan+UBSan), short run (FUZZ_SECONDS)"
-	@echo "make wp-mission     Frama-C/WP (RTE, smoke tests) over kernel/src/mission.c"
 
 # ---------------------------------------------------------------- host builds
 # $(call host_lib,NAME,CC,EXTRA_CFLAGS)
@@ -162,7 +161,7 @@ $(eval $(call mission_host_lib,cov,gcc,-O0 -g --coverage))
 $(eval $(call host_lib,asanubsan,clang,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
 $(eval $(call mission_host_lib,asanubsan,clang,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
 
-.PHONY: mission-tool test-mission fuzz wp-mission
+.PHONY: mission-tool test-mission fuzz
 mission-tool: $(BUILD)/mt-mission
 $(BUILD)/mt-mission: tools/mission/main.c $(BUILD)/gcc/libmt_mission_host.a $(BUILD)/gcc/libmt.a
 	gcc $(WARN_HOST) -O2 -g $(KERNEL_INC) -Itools/mission $< $(BUILD)/gcc/libmt_mission_host.a \
@@ -207,15 +206,3 @@ fuzz: $(addprefix $(BUILD)/fuzz/,$(FUZZ_TARGETS))
 	        grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|==[0-9]+==ERROR|SUMMARY)" || true; \
 	    test -z "$$(ls crash-* leak-* timeout-* 2>/dev/null)" || { echo "fuzz: $$t found a failure"; exit 1; }; \
 	done
-
-# Frama-C/WP over the mission module; gate on the JSON report.
-WP_FLAGS := -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast -wp-smoke-tests \
-            -wp-prover z3,cvc4 -wp-timeout 10 -wp-par $(NPROC)
-wp-mission:
-	@mkdir -p $(BUILD)/wp
-	@test -n "$$WHY3CONFIG" || { why3 config detect -C $(BUILD)/wp/why3.conf >/dev/null 2>&1; }
-	WHY3CONFIG=$${WHY3CONFIG:-$(BUILD)/wp/why3.conf} frama-c $(WP_FLAGS) \
-	    -cpp-extra-args="$(KERNEL_INC) -Ikernel/src" kernel/src/mission.c \
-	    -wp-report-json $(BUILD)/wp/mission.json > $(BUILD)/wp/mission.log 2>&1
-	@grep -E "^\[wp\] Proved goals" $(BUILD)/wp/mission.log
-	@tools/mission/wp_gate.py $(BUILD)/wp/mission.json

@@ -18,8 +18,8 @@ WP_DIR       ?= $(WP_ROOT)/wp
 WP_WHY3CONF  := $(WP_ROOT)/why3.conf
 # Longest first (make -j starts them in this order, so the slowest module does not start
 # last and leave one core idle at the end); modules not named here follow, alphabetically.
-WP_ORDER     := sched ring objring proc laws sem time status
-WP_ALL_MODS  := $(filter-out invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws
+WP_ORDER     := mission sched ring objring proc laws sem time status
+WP_ALL_MODS  := $(filter-out invoke mission_invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws
 WP_MODULES   := $(filter $(WP_ALL_MODS),$(WP_ORDER)) $(filter-out $(WP_ORDER),$(WP_ALL_MODS))
 # Per proof goal; smoke tests have their own limit (-wp-smoke-timeout, 2 s by default). The
 # slowest passing goal takes about 7 s on an idle 2-core machine: 20 s leaves room for a loaded
