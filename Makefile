@@ -90,6 +90,7 @@ test: deps-test
 	    TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" ASAN_OPTIONS=detect_leaks=1 \
 	    $(BUILD)/$$v/mt_tests --gtest_brief=1; \
 	done
+	@$(MAKE) --no-print-directory test-mission-tool
 
 test-fast: $(BUILD)/gcc/mt_tests
 	$(BUILD)/gcc/mt_tests
@@ -161,7 +162,7 @@ $(eval $(call mission_host_lib,cov,gcc,-O0 -g --coverage))
 $(eval $(call host_lib,asanubsan,clang,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
 $(eval $(call mission_host_lib,asanubsan,clang,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
 
-.PHONY: mission-tool test-mission fuzz
+.PHONY: mission-tool test-mission test-mission-tool fuzz
 mission-tool: $(BUILD)/mt-mission
 $(BUILD)/mt-mission: tools/mission/main.c $(BUILD)/gcc/libmt_mission_host.a $(BUILD)/gcc/libmt.a
 	gcc $(WARN_HOST) -O2 -g $(KERNEL_INC) -Itools/mission $< $(BUILD)/gcc/libmt_mission_host.a \
@@ -177,9 +178,14 @@ endef
 $(eval $(call mission_test_bin,gcc,g++,-O2 -g))
 $(eval $(call mission_test_bin,asanubsan,clang++,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
 
-test-mission: $(BUILD)/gcc/mt_mission_tests $(BUILD)/asanubsan/mt_mission_tests $(BUILD)/mt-mission
+test-mission: $(BUILD)/gcc/mt_mission_tests $(BUILD)/asanubsan/mt_mission_tests
 	$(BUILD)/gcc/mt_mission_tests --gtest_brief=1
 	ASAN_OPTIONS=detect_leaks=1 $(BUILD)/asanubsan/mt_mission_tests --gtest_brief=1
+	@$(MAKE) --no-print-directory test-mission-tool
+
+# mt-mission over the committed mission files (part of make test; the gtest suites of the
+# mission module are in every mt_tests build).
+test-mission-tool: $(BUILD)/mt-mission
 	@set -e; for f in tests/missions/*.waypoints; do \
 	    $(BUILD)/mt-mission check --json $$f >/dev/null || { echo "mt-mission: $$f should be valid"; exit 1; }; \
 	done; \
@@ -197,12 +203,15 @@ $(BUILD)/fuzz/%: fuzz/mission/%.c $(MISSION_HOST_SRC) $(wildcard tools/mission/*
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) $(KERNEL_INC) -Ikernel/src -Itools/mission $< $(MISSION_HOST_SRC) \
 	    kernel/src/mission.c kernel/src/mission_invoke.c kernel/src/status.c -lm -o $@
-fuzz: $(addprefix $(BUILD)/fuzz/,$(FUZZ_TARGETS))
+fuzz: deps-test
+	@$(MAKE) --no-print-directory $(addprefix $(BUILD)/fuzz/,$(FUZZ_TARGETS))
 	@set -e; for t in $(FUZZ_TARGETS); do \
-	    mkdir -p $(BUILD)/fuzz/corpus/$$t; \
+	    mkdir -p $(BUILD)/fuzz/corpus/$$t $(BUILD)/fuzz/artifacts; \
 	    echo "== $$t ($(FUZZ_SECONDS) s, seeds fuzz/mission/corpus/$$t)"; \
-	    $(BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -print_final_stats=1 \
-	        $(BUILD)/fuzz/corpus/$$t fuzz/mission/corpus/$$t 2>&1 | \
-	        grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|==[0-9]+==ERROR|SUMMARY)" || true; \
-	    test -z "$$(ls crash-* leak-* timeout-* 2>/dev/null)" || { echo "fuzz: $$t found a failure"; exit 1; }; \
+	    rc=0; $(BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -print_final_stats=1 \
+	        -artifact_prefix=$(BUILD)/fuzz/artifacts/$$t- \
+	        $(BUILD)/fuzz/corpus/$$t fuzz/mission/corpus/$$t >$(BUILD)/fuzz/$$t.log 2>&1 || rc=$$?; \
+	    grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|==[0-9]+==ERROR|SUMMARY)" \
+	        $(BUILD)/fuzz/$$t.log || true; \
+	    [ $$rc -eq 0 ] || { tail -40 $(BUILD)/fuzz/$$t.log; echo "fuzz: $$t failed (exit $$rc)"; exit 1; }; \
 	done

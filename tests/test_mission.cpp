@@ -603,6 +603,35 @@ TEST(MissionState, AllNavsRefusedCompletesWithoutSpinning)
     EXPECT_EQ(v.completes, 0);
 }
 
+TEST(MissionState, NavAfterLongDoStretchIsLoadedAtEveryBoundary)
+{
+    // AP gives up after 255 iterations of its nav search (post-decremented guard).
+    // A nav command reached on the 255th step makes AP complete right after starting it;
+    // one beyond makes AP report success with no nav loaded and never complete. Here the
+    // nav command is loaded and the mission completes once, on either side of 255.
+    for (int dos = 250; dos <= 260; dos++) {
+        std::vector<mt_mission_cmd_t> c{Home()};
+        for (int k = 0; k < dos; k++) {
+            c.push_back(Servo());
+        }
+        c.push_back(Wp(1));
+        c.push_back(Land());
+        Vehicle v;
+        v.verify_after[static_cast<uint16_t>(dos + 1)] = 3 * dos; // room for the do stretch
+        ASSERT_EQ(v.Load(c), MT_OK) << dos;
+        ASSERT_EQ(mt_mission_start(v.m.get()), MT_OK) << dos;
+        EXPECT_EQ(v.m->nav, dos + 1) << dos;
+        EXPECT_EQ(v.m->state, MT_MISSION_RUNNING) << dos;
+        EXPECT_EQ(v.completes, 0) << dos;
+        v.Run(100000);
+        // the waypoint, every do command of the leading stretch, then land
+        EXPECT_EQ(v.starts.size(), static_cast<size_t>(dos) + 2u) << dos;
+        EXPECT_EQ(v.starts.front(), dos + 1) << dos;
+        EXPECT_EQ(v.starts.back(), dos + 2) << dos;
+        EXPECT_EQ(v.completes, 1) << dos;
+    }
+}
+
 TEST(MissionState, GetReportsCurrentByIndex)
 {
     Vehicle v;
