@@ -185,6 +185,7 @@ static int frame_ok(uint8_t frame, uint8_t flags)
 }
 
 /*@ assigns \nothing;
+    ensures bool: \result == 0 || \result == 1;
     ensures \result == 1 <==> v % MT_MISSION_MILLI == 0;
 */
 static int is_int(int32_t v)
@@ -193,6 +194,7 @@ static int is_int(int32_t v)
 }
 
 /*@ assigns \nothing;
+    ensures bool: \result == 0 || \result == 1;
     ensures \result == 1 <==> MtMissionRepeatOk(v);
 */
 static int repeat_ok(int32_t v)
@@ -378,14 +380,42 @@ static uint8_t node_safe(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
     return ((tgt != 0u) && (next != 0u)) ? 1u : 0u;
 }
 
-mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
+/*@ lemma MtMissionInv_kept{L1, L2}:
+      \forall mt_mission_t *m;
+        MtMissionInv{L1}(m) ==> MtMissionActiveUnchanged{L1, L2}(m) ==>
+        \at(m->start_fn, L1) == \at(m->start_fn, L2) ==>
+        \at(m->verify_fn, L1) == \at(m->verify_fn, L2) ==>
+        \at(m->complete_fn, L1) == \at(m->complete_fn, L2) ==>
+        MtMissionInv{L2}(m);
+*/
+
+/* mt_mission_check without the mission object (which it does not need). */
+/*@ requires cmds: n < 1 || n > MT_CFG_MISSION_MAX_CMDS || MtMissionCmdsIn(cmds, n);
+    requires bad: \valid(bad) && \separated(bad, cmds + (0 .. n - 1));
+    requires sep_scratch: \separated(bad, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                                      mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1)) &&
+        \separated(cmds + (0 .. n - 1), mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                   mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
+    assigns mt_mission_scratch_safe[0 .. MT_CFG_MISSION_MAX_CMDS - 1],
+            mt_mission_scratch_target[0 .. MT_CFG_MISSION_MAX_CMDS - 1], *bad;
+    behavior ok:
+      assumes 1 <= n <= MT_CFG_MISSION_MAX_CMDS;
+      ensures located: \result == MT_OK <==> *bad == MT_MISSION_NONE;
+      ensures in_range: \result != MT_OK ==> *bad < n;
+      ensures targets: \result == MT_OK ==> MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
+    behavior bad_size:
+      assumes n < 1 || n > MT_CFG_MISSION_MAX_CMDS;
+      ensures status: \result == MT_E_MISSION_SIZE && *bad == 0;
+    complete behaviors;
+    disjoint behaviors;
+*/
+static mt_status_t check_list(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
 {
     uint16_t i;
     uint32_t round;
     mt_status_t st;
     int changed;
 
-    (void)m; /* the active mission is not needed to check a candidate */
     *bad = 0u;
     if ((n < 1u) || (n > MT_CFG_MISSION_MAX_CMDS)) {
         return MT_E_MISSION_SIZE;
@@ -459,6 +489,116 @@ mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds
     return MT_OK;
 }
 
+mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
+{
+    mt_status_t st = check_list(cmds, n, bad);
+
+    /*@ assert kept: MtMissionActiveUnchanged{Pre, Here}(m); */
+    return st;
+}
+
+/* Field by field (WP's typed model handles a structure assignment as one
+ * opaque block; the fields give small goals). */
+/*@ requires \valid(dst) && \valid_read(src) && \separated(dst, src);
+    assigns dst->id, dst->frame, dst->options, dst->param[0 .. 3], dst->x, dst->y, dst->z;
+    ensures MtMissionSameCmd(dst, src);
+*/
+static void copy_cmd(mt_mission_cmd_t *dst, const mt_mission_cmd_t *src)
+{
+    dst->id = src->id;
+    dst->frame = src->frame;
+    dst->options = src->options;
+    dst->param[0] = src->param[0];
+    dst->param[1] = src->param[1];
+    dst->param[2] = src->param[2];
+    dst->param[3] = src->param[3];
+    dst->x = src->x;
+    dst->y = src->y;
+    dst->z = src->z;
+}
+
+/* Store checked command c as entry i of a list of n: its class, and for a
+ * jump its resolved target and repeat count; the jump counter starts at 0. */
+/*@ requires \valid(m) && 1 <= i < n <= MT_CFG_MISSION_MAX_CMDS;
+    requires \valid_read(c) && \separated(c, m);
+    requires MtMissionIsJumpId(c->id) ==> 1 <= tgt < n && MtMissionRepeatOk(c->param[1]);
+    assigns m->cmd[i].id, m->cmd[i].frame, m->cmd[i].options, m->cmd[i].param[0 .. 3],
+            m->cmd[i].x, m->cmd[i].y, m->cmd[i].z,
+            m->kind[i], m->target[i], m->repeat[i], m->count[i];
+    ensures MtMissionEntryOk(m, i, n);
+    ensures MtMissionSameCmd(&m->cmd[i], c);
+*/
+static void put_cmd(mt_mission_t *m, uint16_t i, const mt_mission_cmd_t *c, uint16_t tgt, uint16_t n)
+{
+    uint8_t k = mt_mission_kind_of(c->id);
+
+    if (k == MT_MISSION_KIND_HOME) {
+        k = MT_MISSION_KIND_DO; /* unreachable after the check */
+    }
+    copy_cmd(&m->cmd[i], c);
+    m->kind[i] = k;
+    m->target[i] = 0u;
+    m->repeat[i] = 0;
+    m->count[i] = 0;
+    if (k == MT_MISSION_KIND_JUMP) {
+        m->target[i] = tgt;
+        m->repeat[i] = (int16_t)(c->param[1] / MT_MISSION_MILLI);
+    }
+}
+
+/* Cursors of a freshly applied list of n commands. */
+/*@ requires \valid(m) && 1 <= n <= MT_CFG_MISSION_MAX_CMDS;
+    assigns m->total, m->generation, m->state, m->do_done, m->nav, m->do_cmd, m->wpos, m->prev_nav;
+    ensures m->total == n && m->state == MT_MISSION_STOPPED && m->wpos == 1 && m->do_done == 0;
+    ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->prev_nav == MT_MISSION_NONE;
+    ensures m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF;
+*/
+static void reset_cursors(mt_mission_t *m, uint16_t n)
+{
+    m->total = n;
+    if (m->generation < 0xFFFFFFFFu) {
+        m->generation++;
+    }
+    m->state = MT_MISSION_STOPPED;
+    m->do_done = 0u;
+    m->nav = MT_MISSION_NONE;
+    m->do_cmd = MT_MISSION_NONE;
+    m->wpos = 1u;
+    m->prev_nav = MT_MISSION_NONE;
+}
+
+/*@ lemma MtMissionEntries_tables:
+      \forall mt_mission_t *m;
+        (\forall integer j; 1 <= j < m->total ==> MtMissionEntryOk(m, j, m->total)) ==>
+        m->kind[0] == MT_MISSION_KIND_HOME ==>
+        MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m);
+*/
+
+/* Entries 1 .. n-1 from the checked list (home is stored by apply). */
+/*@ requires \valid(m) && 1 <= n <= MT_CFG_MISSION_MAX_CMDS;
+    requires \separated(m, mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
+    requires MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
+    requires \separated(cmds + (0 .. n - 1), m);
+    assigns m->cmd[1 .. n - 1], m->kind[1 .. n - 1], m->target[1 .. n - 1], m->repeat[1 .. n - 1],
+            m->count[1 .. n - 1];
+    ensures \forall integer j; 1 <= j < n ==> MtMissionEntryOk(m, j, n);
+*/
+static void put_all(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
+{
+    uint16_t i;
+
+    /*@ loop invariant 1 <= i <= n;
+        loop invariant \forall integer j; 1 <= j < i ==>
+            MtMissionEntryVals(m->kind[j], m->cmd[j].id, m->target[j], m->repeat[j], m->count[j], n);
+        loop assigns i, m->cmd[1 .. n - 1], m->kind[1 .. n - 1], m->target[1 .. n - 1],
+                     m->repeat[1 .. n - 1], m->count[1 .. n - 1];
+        loop variant n - i;
+    */
+    for (i = 1u; i < n; i++) {
+        put_cmd(m, i, &cmds[i], mt_mission_scratch_target[i], n);
+    }
+}
+
 /* Make the checked list the active mission. Cannot fail. */
 /*@ requires MtMissionInv(m);
     requires MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
@@ -473,53 +613,19 @@ mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds
 */
 static void apply(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
 {
-    uint16_t i;
-
-    m->total = 0u;
-    m->cmd[0] = cmds[0];
+    reset_cursors(m, n);
+    copy_cmd(&m->cmd[0], &cmds[0]);
     m->kind[0] = MT_MISSION_KIND_HOME;
     m->target[0] = 0u;
     m->repeat[0] = 0;
     m->count[0] = 0;
-    /*@ loop invariant 1 <= i <= n;
-        loop invariant m->kind[0] == MT_MISSION_KIND_HOME;
-        loop invariant \forall integer j; 1 <= j < i ==>
-            (m->kind[j] == MT_MISSION_KIND_NAV || m->kind[j] == MT_MISSION_KIND_DO ||
-             m->kind[j] == MT_MISSION_KIND_JUMP || m->kind[j] == MT_MISSION_KIND_TAG) &&
-            (m->kind[j] == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(m->cmd[j].id)) &&
-            (m->kind[j] == MT_MISSION_KIND_TAG <==> m->cmd[j].id == MT_MAV_CMD_JUMP_TAG) &&
-            (m->kind[j] == MT_MISSION_KIND_JUMP ==>
-                1 <= m->target[j] < n && -1 <= m->repeat[j] <= MT_MISSION_REPEAT_MAX &&
-                m->count[j] == 0);
-        loop assigns i, m->cmd[1 .. n - 1], m->kind[1 .. n - 1], m->target[1 .. n - 1],
-                     m->repeat[1 .. n - 1], m->count[1 .. n - 1];
-        loop variant n - i;
-    */
-    for (i = 1u; i < n; i++) {
-        uint8_t k = mt_mission_kind_of(cmds[i].id);
-        if (k == MT_MISSION_KIND_HOME) {
-            k = MT_MISSION_KIND_DO; /* unreachable after the check */
-        }
-        m->cmd[i] = cmds[i];
-        m->kind[i] = k;
-        m->target[i] = 0u;
-        m->repeat[i] = 0;
-        m->count[i] = 0;
-        if (k == MT_MISSION_KIND_JUMP) {
-            m->target[i] = mt_mission_scratch_target[i];
-            m->repeat[i] = (int16_t)(cmds[i].param[1] / MT_MISSION_MILLI);
-        }
-    }
-    m->total = n;
-    if (m->generation < 0xFFFFFFFFu) {
-        m->generation++;
-    }
-    m->state = MT_MISSION_STOPPED;
-    m->do_done = 0u;
-    m->nav = MT_MISSION_NONE;
-    m->do_cmd = MT_MISSION_NONE;
-    m->wpos = 1u;
-    m->prev_nav = MT_MISSION_NONE;
+    put_all(m, cmds, n);
+    /*@ assert entries: \forall integer j; 1 <= j < m->total ==> MtMissionEntryOk(m, j, m->total); */
+    /*@ assert home: m->kind[0] == MT_MISSION_KIND_HOME; */
+    /*@ assert tables: MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m); */
+    /*@ assert cursors: MtMissionCursors(m); */
+    /*@ assert scalars: 0 <= m->total <= MT_CFG_MISSION_MAX_CMDS &&
+            m->start_fn != \null && m->verify_fn != \null && m->complete_fn != \null; */
 }
 
 mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
@@ -528,6 +634,7 @@ mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint1
 
     if (m->state == MT_MISSION_RUNNING) {
         *bad = MT_MISSION_NONE;
+        /*@ assert kept: MtMissionActiveUnchanged{Pre, Here}(m); */
         return MT_E_STATE;
     }
     st = mt_mission_check(m, cmds, n, bad);
@@ -777,6 +884,44 @@ static void restart_nav(mt_mission_t *m)
     }
 }
 
+/* A state change that keeps the invariant (COMPLETE is entered by finish only). */
+/*@ requires MtMissionInv(m) && m->total >= 2;
+    requires st == MT_MISSION_STOPPED || st == MT_MISSION_RUNNING;
+    assigns m->state;
+    ensures MtMissionInv(m) && m->state == st;
+*/
+static void set_state(mt_mission_t *m, uint8_t st)
+{
+    m->state = st;
+}
+
+/* Start the active do command again; a refusal counts it as done. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
+    requires m->do_cmd != MT_MISSION_NONE;
+    assigns m->do_cmd, MtPortNow;
+    ensures MtMissionInv(m);
+*/
+static void restart_do(mt_mission_t *m)
+{
+    if (!mt_mission_invoke_cmd(m->start_fn, m->ctx, m->do_cmd, &m->cmd[m->do_cmd])) {
+        m->do_cmd = MT_MISSION_NONE;
+    }
+}
+
+/* No active command; the walk continues at pos. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && 1 <= pos < m->total;
+    assigns m->nav, m->do_cmd, m->do_done, m->wpos;
+    ensures MtMissionInv(m);
+    ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->do_done == 0 && m->wpos == pos;
+*/
+static void reposition(mt_mission_t *m, uint16_t pos)
+{
+    m->nav = MT_MISSION_NONE;
+    m->do_cmd = MT_MISSION_NONE;
+    m->do_done = 0u;
+    m->wpos = pos;
+}
+
 mt_status_t mt_mission_resume(mt_mission_t *m)
 {
     if (m->state == MT_MISSION_RUNNING) {
@@ -788,16 +933,14 @@ mt_status_t mt_mission_resume(mt_mission_t *m)
     if (m->state == MT_MISSION_COMPLETE) {
         return mt_mission_start(m);
     }
-    m->state = MT_MISSION_RUNNING;
+    set_state(m, MT_MISSION_RUNNING);
     if (m->nav == MT_MISSION_NONE) {
         advance(m);
         return MT_OK;
     }
     restart_nav(m);
     if ((m->state == MT_MISSION_RUNNING) && (m->do_cmd != MT_MISSION_NONE)) {
-        if (!mt_mission_invoke_cmd(m->start_fn, m->ctx, m->do_cmd, &m->cmd[m->do_cmd])) {
-            m->do_cmd = MT_MISSION_NONE;
-        }
+        restart_do(m);
     }
     return MT_OK;
 }
@@ -813,14 +956,11 @@ mt_status_t mt_mission_set_current(mt_mission_t *m, uint16_t i)
     if ((i == 0u) || (m->state == MT_MISSION_COMPLETE)) {
         rewind(m);
     }
-    m->nav = MT_MISSION_NONE;
-    m->do_cmd = MT_MISSION_NONE;
-    m->do_done = 0u;
-    m->wpos = (i == 0u) ? 1u : i;
+    reposition(m, (uint16_t)((i == 0u) ? 1u : i));
     if (m->state == MT_MISSION_RUNNING) {
         advance(m);
     } else {
-        m->state = MT_MISSION_STOPPED;
+        set_state(m, MT_MISSION_STOPPED);
     }
     return MT_OK;
 }
@@ -887,7 +1027,7 @@ mt_status_t mt_mission_get(const mt_mission_t *m, uint16_t i, mt_mission_cmd_t *
     if (i >= m->total) {
         return MT_E_INVALID;
     }
-    *out = m->cmd[i];
+    copy_cmd(out, &m->cmd[i]);
     *is_current = (i == m->nav);
     return MT_OK;
 }

@@ -210,6 +210,26 @@ extern uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
         \forall integer i; 1 <= i < n ==> MtMissionIsJumpId(c[i].id) ==>
             1 <= tgt[i] < n && MtMissionRepeatOk(c[i].param[1]);
 
+    // The values of one command of an active list of n commands are well formed
+    // (one index of MtMissionKinds, MtMissionJumps and MtMissionCounters).
+    predicate MtMissionEntryVals(integer kind, integer id, integer target, integer repeat,
+                                 integer count, integer n) =
+        (kind == MT_MISSION_KIND_NAV || kind == MT_MISSION_KIND_DO ||
+         kind == MT_MISSION_KIND_JUMP || kind == MT_MISSION_KIND_TAG) &&
+        (kind == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(id)) &&
+        (kind == MT_MISSION_KIND_TAG <==> id == MT_MAV_CMD_JUMP_TAG) &&
+        (kind == MT_MISSION_KIND_JUMP ==>
+            1 <= target < n && -1 <= repeat <= MT_MISSION_REPEAT_MAX && count == 0);
+
+    predicate MtMissionEntryOk(mt_mission_t *m, integer i, integer n) =
+        MtMissionEntryVals(m->kind[i], m->cmd[i].id, m->target[i], m->repeat[i], m->count[i], n);
+
+    predicate MtMissionSameCmd(mt_mission_cmd_t *a, mt_mission_cmd_t *b) =
+        a->id == b->id && a->frame == b->frame && a->options == b->options &&
+        a->param[0] == b->param[0] && a->param[1] == b->param[1] &&
+        a->param[2] == b->param[2] && a->param[3] == b->param[3] &&
+        a->x == b->x && a->y == b->y && a->z == b->z;
+
     predicate MtMissionActiveUnchanged{L1, L2}(mt_mission_t *m) =
         \at(m->total, L1) == \at(m->total, L2) &&
         \at(m->generation, L1) == \at(m->generation, L2) &&
@@ -276,6 +296,10 @@ mt_status_t mt_mission_check_cmd(const mt_mission_cmd_t *cmds, uint16_t n, uint1
 /*@ requires inv: MtMissionInv(m);
     requires cmds: n < 1 || n > MT_CFG_MISSION_MAX_CMDS || MtMissionCmdsIn(cmds, n);
     requires sep: \separated(cmds + (0 .. n - 1), m) && \separated(bad, m, cmds + (0 .. n - 1));
+    requires sep_scratch: \separated(bad, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                                      mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1)) &&
+        \separated(cmds + (0 .. n - 1), mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                   mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
     requires bad: \valid(bad);
     assigns mt_mission_scratch_safe[0 .. MT_CFG_MISSION_MAX_CMDS - 1],
             mt_mission_scratch_target[0 .. MT_CFG_MISSION_MAX_CMDS - 1], *bad;
@@ -303,6 +327,10 @@ mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds
 /*@ requires inv: MtMissionInv(m);
     requires cmds: n < 1 || n > MT_CFG_MISSION_MAX_CMDS || MtMissionCmdsIn(cmds, n);
     requires sep: \separated(cmds + (0 .. n - 1), m) && \separated(bad, m, cmds + (0 .. n - 1));
+    requires sep_scratch: \separated(bad, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                                      mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1)) &&
+        \separated(cmds + (0 .. n - 1), mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                   mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
     requires bad: \valid(bad);
     assigns *m, *bad, mt_mission_scratch_safe[0 .. MT_CFG_MISSION_MAX_CMDS - 1],
             mt_mission_scratch_target[0 .. MT_CFG_MISSION_MAX_CMDS - 1];
@@ -495,9 +523,7 @@ mt_status_t mt_mission_next_nav(const mt_mission_t *m, uint16_t from, uint16_t *
     behavior ok:
       assumes i < m->total;
       ensures status: \result == MT_OK;
-      ensures copy: out->id == m->cmd[i].id && out->frame == m->cmd[i].frame &&
-          out->x == m->cmd[i].x && out->y == m->cmd[i].y && out->z == m->cmd[i].z &&
-          \forall integer k; 0 <= k < 4 ==> out->param[k] == m->cmd[i].param[k];
+      ensures copy: MtMissionSameCmd(out, &m->cmd[i]);
       ensures current: *is_current == (i == m->nav);
     behavior bad:
       assumes i >= m->total;
