@@ -52,7 +52,9 @@ AdvanceFrom(p, c, s, pn) ==
 NavDone == LET w == Walk(wpos, cnt, FALSE, N) IN
            <<IF w[1] < N THEN w[1] + 1 ELSE N, w[2]>>
 
-StartAct == \E s \in BOOLEAN :
+\* mt_mission_start with start outcome s (the *With forms pin the environment's
+\* choices; tla/MissionSeqTrace.tla feeds them from a log of the C code)
+StartWith(s) ==
     LET n == Look(1, [i \in Idx |-> 0], N) IN
     IF n = N \/ n = -1
     THEN /\ st' = "complete" /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ runDone' = 1
@@ -66,7 +68,7 @@ Stop == /\ st = "running" /\ st' = "stopped"
         /\ UNCHANGED <<nav, dcmd, ddone, wpos, cnt, runDone, lastCb, prevNav>>
 
 \* resume from STOPPED with no active nav: advance from the position
-ResumeFix == \E s \in BOOLEAN :
+ResumeFixWith(s) ==
     /\ st = "stopped" /\ nav = NONE
     /\ LET n == Look(wpos, cnt, N) IN
        IF n = N \/ n = -1
@@ -77,18 +79,17 @@ ResumeFix == \E s \in BOOLEAN :
                ELSE LET w == Walk(wpos, cnt, FALSE, N) IN
                     /\ nav' = NONE /\ prevNav' = n /\ wpos' = (IF w[1] < N THEN w[1] + 1 ELSE N) /\ cnt' = w[2]
 \* resume with an active nav: start it (and the do command) again; refused = done
-ResumeRestart == \E s \in BOOLEAN :
+ResumeRestartWith(s) ==
     /\ st = "stopped" /\ nav # NONE
     /\ IF s THEN /\ st' = "running" /\ lastCb' = (IF dcmd # NONE THEN dcmd ELSE nav)
                  /\ UNCHANGED <<nav, dcmd, ddone, wpos, cnt, runDone, prevNav>>
        ELSE LET w == NavDone IN
             /\ st' = "running" /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ prevNav' = nav
             /\ wpos' = w[1] /\ cnt' = w[2] /\ lastCb' = nav /\ runDone' = runDone
-ResumeComplete == st = "complete" /\ StartAct
-mt_mission_resume == ResumeFix \/ ResumeRestart \/ ResumeComplete
+ResumeCompleteWith(s) == st = "complete" /\ StartWith(s)
 
 \* set_current while not running: position only (COMPLETE resets counters)
-SetCurrentIdle == \E i \in 0..(N-1) :
+SetCurrentIdleWith(i) ==
     /\ st # "running"
     /\ st' = "stopped" /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE
     /\ wpos' = (IF i = 0 THEN 1 ELSE i)
@@ -97,7 +98,7 @@ SetCurrentIdle == \E i \in 0..(N-1) :
     /\ runDone' = (IF st = "complete" THEN 0 ELSE runDone)   \* a new run begins
     /\ UNCHANGED lastCb
 \* set_current while running: drop both cursors, load the nav at or after i
-SetCurrentRunning == \E i \in 0..(N-1), s \in BOOLEAN :
+SetCurrentRunningWith(i, s) ==
     /\ st = "running"
     /\ LET p == IF i = 0 THEN 1 ELSE i
            c == IF i = 0 THEN [j \in Idx |-> 0] ELSE cnt
@@ -111,12 +112,22 @@ SetCurrentRunning == \E i \in 0..(N-1), s \in BOOLEAN :
                     /\ nav' = NONE /\ prevNav' = n /\ wpos' = (IF w[1] < N THEN w[1] + 1 ELSE N) /\ cnt' = w[2]
 
 \* restart_current: start the nav again; a refusal completes it (next update loads)
-RestartCurrent == \E s \in BOOLEAN :
+RestartCurrentWith(s) ==
     /\ st = "running" /\ nav # NONE
     /\ IF s THEN lastCb' = nav /\ UNCHANGED <<st, nav, dcmd, ddone, wpos, cnt, runDone, prevNav>>
        ELSE LET w == NavDone IN
             /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ prevNav' = nav
             /\ wpos' = w[1] /\ cnt' = w[2] /\ lastCb' = nav /\ UNCHANGED <<st, runDone>>
+
+\* the actions with every outcome (and every index) the environment may choose
+StartAct == \E s \in BOOLEAN : StartWith(s)
+ResumeFix == \E s \in BOOLEAN : ResumeFixWith(s)
+ResumeRestart == \E s \in BOOLEAN : ResumeRestartWith(s)
+ResumeComplete == \E s \in BOOLEAN : ResumeCompleteWith(s)
+mt_mission_resume == ResumeFix \/ ResumeRestart \/ ResumeComplete
+SetCurrentIdle == \E i \in 0..(N-1) : SetCurrentIdleWith(i)
+SetCurrentRunning == \E i \in 0..(N-1), s \in BOOLEAN : SetCurrentRunningWith(i, s)
+RestartCurrent == \E s \in BOOLEAN : RestartCurrentWith(s)
 
 \* mt_mission_update, nav part (vn: verify outcome, sn: start outcome)
 UpdateNav(vn, sn) ==
@@ -141,9 +152,11 @@ DoPart(vd, sd) ==
 \* separate step flag would double the state space; instead the C order
 \* (nav then do) is modelled as two steps that no other action can split.
 VARIABLE phase
-UpdateA == \E vn, sn \in BOOLEAN : phase = "idle" /\ UpdateNav(vn, sn) /\ phase' = "do"
-UpdateB == \E vd, sd \in BOOLEAN : phase = "do" /\ phase' = "idle" /\ DoPart(vd, sd)
-           /\ UNCHANGED <<st, nav, runDone, prevNav>>
+UpdateAWith(vn, sn) == phase = "idle" /\ UpdateNav(vn, sn) /\ phase' = "do"
+UpdateBWith(vd, sd) == phase = "do" /\ phase' = "idle" /\ DoPart(vd, sd)
+                       /\ UNCHANGED <<st, nav, runDone, prevNav>>
+UpdateA == \E vn, sn \in BOOLEAN : UpdateAWith(vn, sn)
+UpdateB == \E vd, sd \in BOOLEAN : UpdateBWith(vd, sd)
 UpdateGoodA == phase = "idle" /\ UpdateNav(TRUE, TRUE) /\ phase' = "do"
 UpdateGoodB == phase = "do" /\ phase' = "idle" /\ DoPart(TRUE, TRUE) /\ UNCHANGED <<st, nav, runDone, prevNav>>
 
