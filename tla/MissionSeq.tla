@@ -43,7 +43,7 @@ AdvanceFrom(p, c, s, pn) ==
     LET n == Look(p, c, N) IN
     IF n = N \/ n = -1
     THEN Finish /\ wpos' = p /\ cnt' = c /\ lastCb' = lastCb /\ prevNav' = pn
-    ELSE /\ lastCb' = n /\ st' = st /\ dcmd' = NONE /\ ddone' = FALSE /\ runDone' = runDone
+    ELSE /\ lastCb' = n /\ st' = "running" /\ dcmd' = NONE /\ ddone' = FALSE /\ runDone' = runDone
          /\ IF s THEN nav' = n /\ wpos' = p /\ cnt' = c /\ prevNav' = pn
             ELSE LET w == Walk(p, c, FALSE, N) IN
                  /\ nav' = NONE /\ prevNav' = n
@@ -78,14 +78,16 @@ ResumeFixWith(s) ==
             /\ IF s THEN nav' = n /\ UNCHANGED <<wpos, cnt, prevNav>>
                ELSE LET w == Walk(wpos, cnt, FALSE, N) IN
                     /\ nav' = NONE /\ prevNav' = n /\ wpos' = (IF w[1] < N THEN w[1] + 1 ELSE N) /\ cnt' = w[2]
-\* resume with an active nav: start it (and the do command) again; refused = done
-ResumeRestartWith(s) ==
+\* resume with an active nav: start it (outcome s) and then the do command
+\* (outcome s2) again; a refused nav = done, and advance() loads the next one
+\* at once (outcome s2) or completes the mission (restart_nav)
+ResumeRestartWith(s, s2) ==
     /\ st = "stopped" /\ nav # NONE
     /\ IF s THEN /\ st' = "running" /\ lastCb' = (IF dcmd # NONE THEN dcmd ELSE nav)
-                 /\ UNCHANGED <<nav, dcmd, ddone, wpos, cnt, runDone, prevNav>>
-       ELSE LET w == NavDone IN
-            /\ st' = "running" /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ prevNav' = nav
-            /\ wpos' = w[1] /\ cnt' = w[2] /\ lastCb' = nav /\ runDone' = runDone
+                 \* the do command's new start (outcome s2): refused = done
+                 /\ dcmd' = (IF dcmd # NONE /\ ~s2 THEN NONE ELSE dcmd)
+                 /\ UNCHANGED <<nav, ddone, wpos, cnt, runDone, prevNav>>
+       ELSE LET w == NavDone IN AdvanceFrom(w[1], w[2], s2, nav)
 ResumeCompleteWith(s) == st = "complete" /\ StartWith(s)
 
 \* set_current while not running: position only (COMPLETE resets counters)
@@ -102,32 +104,34 @@ SetCurrentRunningWith(i, s) ==
     /\ st = "running"
     /\ LET p == IF i = 0 THEN 1 ELSE i
            c == IF i = 0 THEN [j \in Idx |-> 0] ELSE cnt
-           n == Look(p, c, N) IN
+           n == Look(p, c, N)
+           pn == IF i = 0 THEN NONE ELSE prevNav   \* rewind() when i = 0
+       IN
        IF n = N \/ n = -1
        THEN /\ st' = "complete" /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ runDone' = runDone + 1
-            /\ wpos' = p /\ cnt' = c /\ lastCb' = lastCb /\ prevNav' = prevNav
+            /\ wpos' = p /\ cnt' = c /\ lastCb' = lastCb /\ prevNav' = pn
        ELSE /\ st' = "running" /\ runDone' = runDone /\ lastCb' = n /\ dcmd' = NONE /\ ddone' = FALSE
-            /\ IF s THEN nav' = n /\ wpos' = p /\ cnt' = c /\ prevNav' = prevNav
+            /\ IF s THEN nav' = n /\ wpos' = p /\ cnt' = c /\ prevNav' = pn
                ELSE LET w == Walk(p, c, FALSE, N) IN
                     /\ nav' = NONE /\ prevNav' = n /\ wpos' = (IF w[1] < N THEN w[1] + 1 ELSE N) /\ cnt' = w[2]
 
-\* restart_current: start the nav again; a refusal completes it (next update loads)
-RestartCurrentWith(s) ==
+\* restart_current (restart_nav): start the nav again (outcome s); a refusal
+\* completes it and advance() loads the next one at once (start outcome s2)
+\* or completes the mission
+RestartCurrentWith(s, s2) ==
     /\ st = "running" /\ nav # NONE
     /\ IF s THEN lastCb' = nav /\ UNCHANGED <<st, nav, dcmd, ddone, wpos, cnt, runDone, prevNav>>
-       ELSE LET w == NavDone IN
-            /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ prevNav' = nav
-            /\ wpos' = w[1] /\ cnt' = w[2] /\ lastCb' = nav /\ UNCHANGED <<st, runDone>>
+       ELSE LET w == NavDone IN AdvanceFrom(w[1], w[2], s2, nav)
 
 \* the actions with every outcome (and every index) the environment may choose
 StartAct == \E s \in BOOLEAN : StartWith(s)
 ResumeFix == \E s \in BOOLEAN : ResumeFixWith(s)
-ResumeRestart == \E s \in BOOLEAN : ResumeRestartWith(s)
+ResumeRestart == \E s, s2 \in BOOLEAN : ResumeRestartWith(s, s2)
 ResumeComplete == \E s \in BOOLEAN : ResumeCompleteWith(s)
 mt_mission_resume == ResumeFix \/ ResumeRestart \/ ResumeComplete
 SetCurrentIdle == \E i \in 0..(N-1) : SetCurrentIdleWith(i)
 SetCurrentRunning == \E i \in 0..(N-1), s \in BOOLEAN : SetCurrentRunningWith(i, s)
-RestartCurrent == \E s \in BOOLEAN : RestartCurrentWith(s)
+RestartCurrent == \E s, s2 \in BOOLEAN : RestartCurrentWith(s, s2)
 
 \* mt_mission_update, nav part (vn: verify outcome, sn: start outcome)
 UpdateNav(vn, sn) ==

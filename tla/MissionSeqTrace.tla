@@ -67,7 +67,7 @@ Step ==
             IF E.rc = "OK"
             THEN \/ Idle(ResumeCompleteWith(Out(1))) /\ Calls = Advance
                  \/ Idle(ResumeFixWith(Out(1))) /\ Calls = Advance
-                 \/ /\ Idle(ResumeRestartWith(Out(1)))
+                 \/ /\ Idle(ResumeRestartWith(Out(1), Out(2)))
                     /\ Calls = <<StartCb(nav)>> \o
                                (IF Out(1) THEN (IF dcmd # NONE THEN <<StartCb(dcmd)>> ELSE <<>>)
                                 ELSE Advance)
@@ -79,7 +79,7 @@ Step ==
             ELSE Refused(E.arg >= N)
       [] E.op = "restart_current" ->
             IF E.rc = "OK"
-            THEN /\ Idle(RestartCurrentWith(Out(1)))
+            THEN /\ Idle(RestartCurrentWith(Out(1), Out(2)))
                  /\ Calls = <<StartCb(nav)>> \o (IF Out(1) THEN <<>> ELSE Advance)
             ELSE Refused(~(st = "running" /\ nav # NONE))
       [] E.op = "update" ->

@@ -120,13 +120,13 @@ def write_mission_cfg(path):
 def mutate_mission(data_path, variant):
     """Mission: "mutated" changes the wpos of the middle state-carrying event
     (to the next value in 1..TN); "flipped" flips the outcome of the middle
-    start or verify callback."""
+    start or verify callback. Returns the index of the changed event (0: none)."""
     with open(data_path) as f:
         text = f.read()
     n = int(RE_TN.search(text).group(1))
     found = list((RE_WPOS if variant == "mutated" else RE_CB).finditer(text))
     if not found:
-        return False
+        return 0
     m = found[len(found) // 2]
     if variant == "mutated":
         v = str(int(m.group(1)) % n + 1)
@@ -134,7 +134,7 @@ def mutate_mission(data_path, variant):
         v = "FALSE" if m.group(1) == "TRUE" else "TRUE"
     with open(data_path, "w") as f:
         f.write(text[:m.start(1)] + v + text[m.end(1):])
-    return True
+    return text.count("[op |-> ", 0, m.start(1))
 
 
 def mutate(data_path, slots):
@@ -240,8 +240,10 @@ def main():
                 with open(data) as f:
                     text = f.read()
                 events = text.count("k |-> ") if kind != "mission" else text.count("[op |-> ")
+                changed = 0
                 if kind == "mission" and variant != "trace":
-                    if not mutate_mission(data, variant):
+                    changed = mutate_mission(data, variant)
+                    if not changed:
                         continue
                 elif variant == "mutated" and not mutate(data, slots):
                     continue
@@ -272,6 +274,12 @@ def main():
                 stuck = re.findall(r"^/\\ ti = (\d+)", log, re.M)
                 if result == "rejected" and stuck:
                     rec["unmatched_event"] = int(stuck[-1])   # Trace[ti]: no model step matches
+                if changed:
+                    # a control must fail at the changed event (a flipped outcome of the
+                    # nav half of an update shows at the state check of the do half)
+                    rec["changed_event"] = changed
+                    if rec.get("unmatched_event") not in (changed, changed + 1):
+                        rec["ok"] = ok = False
                 if drop and variant == "trace":
                     # MT_W_DROPPED_OLDEST returns versus objects the consumer discarded
                     with open(data) as f:
