@@ -271,6 +271,15 @@ def main():
                     rec["mission"] = mission
                     rec["ops"] = ops
                     rec["completions"] = int(re.search(r"^Completions == (\d+)", text, re.M).group(1))
+                    # what the trace exercised: calls per operation and status, refused starts
+                    calls = {}
+                    for op, rc in re.findall(r'\[op \|-> "(\w+)", arg \|-> \d+, rc \|-> "(\w+)"', text):
+                        if op != "update_do":
+                            key = ("update" if op == "update_nav" else op) + ":" + rc
+                            calls[key] = calls.get(key, 0) + 1
+                    rec["calls"] = dict(sorted(calls.items()))
+                    rec["refused_starts"] = text.count('k |-> "start", i |-> ') - len(
+                        re.findall(r'k \|-> "start", i \|-> \d+, r \|-> TRUE', text))
                 stuck = re.findall(r"^/\\ ti = (\d+)", log, re.M)
                 if result == "rejected" and stuck:
                     rec["unmatched_event"] = int(stuck[-1])   # Trace[ti]: no model step matches
