@@ -114,16 +114,11 @@ static const char *state_name(uint8_t s)
 static const char *rc_name(mt_status_t st)
 {
     switch (st) {
-    case MT_OK:
-        return "OK";
-    case MT_E_STATE:
-        return "E_STATE";
-    case MT_E_INVALID:
-        return "E_INVALID";
-    case MT_E_EMPTY:
-        return "E_EMPTY";
-    default:
-        return "other";
+    case MT_OK: return "OK";
+    case MT_E_STATE: return "E_STATE";
+    case MT_E_INVALID: return "E_INVALID";
+    case MT_E_EMPTY: return "E_EMPTY";
+    default: return "other";
     }
 }
 
@@ -139,9 +134,11 @@ static void emit(const char *op, uint32_t arg, mt_status_t rc, uint32_t from, ui
         fprintf(g_out, "%s[k |-> \"%s\", i |-> %u, r |-> %s]", j > from ? ", " : "", g_cbs[j].k,
                 g_cbs[j].i, g_cbs[j].r ? "TRUE" : "FALSE");
     }
-    fprintf(g_out, ">>, snap |-> %s, st |-> \"%s\", nav |-> %u, dcmd |-> %u, ddone |-> %s, wpos |-> %u, "
-            "prev |-> %u, cnt |-> <<", snap ? "TRUE" : "FALSE", state_name(g_m.state), idx(g_m.nav),
-            idx(g_m.do_cmd), g_m.do_done ? "TRUE" : "FALSE", g_m.wpos, idx(g_m.prev_nav));
+    fprintf(g_out,
+            ">>, snap |-> %s, st |-> \"%s\", nav |-> %u, dcmd |-> %u, ddone |-> %s, wpos |-> %u, "
+            "prev |-> %u, cnt |-> <<",
+            snap ? "TRUE" : "FALSE", state_name(g_m.state), idx(g_m.nav), idx(g_m.do_cmd),
+            g_m.do_done ? "TRUE" : "FALSE", g_m.wpos, idx(g_m.prev_nav));
     for (j = 1u; j < g_m.total; j++) {
         fprintf(g_out, "%s%d", j > 1u ? ", " : "", g_m.count[j]);
     }
@@ -150,51 +147,71 @@ static void emit(const char *op, uint32_t arg, mt_status_t rc, uint32_t from, ui
 
 /* ------------------------------------------------------------ missions */
 
+typedef struct {
+    uint16_t id;
+    int16_t p1; /* param 1 (jump target, tag), whole units */
+    int16_t p2; /* param 2 (repeat count), whole units */
+} item_t;
+
+/* clang-format off */
+#define NAV {MT_MAV_CMD_WAYPOINT, 0, 0}
+#define DO {MT_MAV_CMD_CONDITION_DELAY, 1, 0}
+#define JUMP(to, rep) {MT_MAV_CMD_DO_JUMP, (to), (rep)}
+#define TAG(t) {MT_MAV_CMD_JUMP_TAG, (t), 0}
+#define JUMP_TAG(t, rep) {MT_MAV_CMD_DO_JUMP_TAG, (t), (rep)}
+/* clang-format on */
+
+/* index 0 is home; comments give index: kind */
+static const item_t k_nested[] = {
+    NAV, /* 1 nav, 2 do, 3 nav, 4 jump->1 x2, 5 tag, 6 do, 7 nav, 8 jump->3 x1, 9 nav */
+    NAV, DO, NAV, JUMP(1, 2), TAG(5), DO, NAV, JUMP(3, 1), NAV};
+static const item_t k_forever[] = {
+    NAV, /* 1 nav, 2 do, 3 jump->5 forever (goto), 4 nav, 5 nav, 6 do, 7 jump->1 forever */
+    NAV, DO, JUMP(5, -1), NAV, NAV, DO, JUMP(1, -1)};
+static const item_t k_tags_do[] = {
+    NAV, /* do-only stretches and jump tags: 1 do, 2 do, 3 nav, 4 tag 7, 5 do, 6 do, 7 nav,
+          * 8 jump_tag 7 x2, 9 do, 10 do, 11 do, 12 nav, 13 jump->12 x1, 14 do, 15 do */
+    DO,  DO, NAV, TAG(7), DO, DO, NAV, JUMP_TAG(7, 2), DO, DO, DO, NAV, JUMP(12, 1), DO, DO};
+
 static mt_mission_cmd_t g_cmds[MAX_CMDS];
 static uint16_t g_n;
 
-static void add(uint16_t id, int32_t p1, int32_t p2)
-{
-    mt_mission_cmd_t *c = &g_cmds[g_n++];
-
-    memset(c, 0, sizeof *c);
-    c->id = id;
-    c->frame = 3u;
-    c->param[0] = p1 * MT_MISSION_MILLI;
-    c->param[1] = p2 * MT_MISSION_MILLI;
-}
-
-#define NAV() add(MT_MAV_CMD_WAYPOINT, 0, 0)
-#define DO() add(MT_MAV_CMD_CONDITION_DELAY, 1, 0)
-#define JUMP(to, rep) add(MT_MAV_CMD_DO_JUMP, (to), (rep))
-#define TAG(t) add(MT_MAV_CMD_JUMP_TAG, (t), 0)
-#define JUMP_TAG(t, rep) add(MT_MAV_CMD_DO_JUMP_TAG, (t), (rep))
-
 static int build(const char *name)
 {
-    g_n = 0u;
-    NAV(); /* home */
+    const item_t *items;
+    uint16_t n;
+    uint16_t i;
+
     if (strcmp(name, "nested") == 0) {
-        /* 1 nav, 2 do, 3 nav, 4 jump->1 x2, 5 tag, 6 do, 7 nav, 8 jump->3 x1, 9 nav */
-        NAV(); DO(); NAV(); JUMP(1, 2); TAG(5); DO(); NAV(); JUMP(3, 1); NAV();
+        items = k_nested;
+        n = (uint16_t)(sizeof k_nested / sizeof k_nested[0]);
     } else if (strcmp(name, "forever") == 0) {
-        /* 1 nav, 2 do, 3 jump->5 forever (goto), 4 nav, 5 nav, 6 do, 7 jump->1 forever */
-        NAV(); DO(); JUMP(5, -1); NAV(); NAV(); DO(); JUMP(1, -1);
+        items = k_forever;
+        n = (uint16_t)(sizeof k_forever / sizeof k_forever[0]);
     } else if (strcmp(name, "tags_do") == 0) {
-        /* do-only stretches and jump tags: 1 do, 2 do, 3 nav, 4 tag 7, 5 do, 6 do, 7 nav,
-         * 8 jump_tag 7 x2, 9 do, 10 do, 11 do, 12 nav, 13 jump->12 x1, 14 do, 15 do */
-        DO(); DO(); NAV(); TAG(7); DO(); DO(); NAV(); JUMP_TAG(7, 2); DO(); DO(); DO(); NAV();
-        JUMP(12, 1); DO(); DO();
+        items = k_tags_do;
+        n = (uint16_t)(sizeof k_tags_do / sizeof k_tags_do[0]);
     } else {
         return -1;
     }
+    memset(g_cmds, 0, sizeof g_cmds);
+    for (i = 0u; i < n; i++) {
+        g_cmds[i].id = items[i].id;
+        g_cmds[i].frame = 3u; /* GLOBAL_RELATIVE_ALT */
+        g_cmds[i].param[0] = items[i].p1 * MT_MISSION_MILLI;
+        g_cmds[i].param[1] = items[i].p2 * MT_MISSION_MILLI;
+    }
+    g_n = n;
     return 0;
 }
 
 static const char *kind_name(uint8_t k)
 {
-    return k == MT_MISSION_KIND_NAV ? "nav" : k == MT_MISSION_KIND_DO ? "do"
-         : k == MT_MISSION_KIND_JUMP ? "jump" : k == MT_MISSION_KIND_TAG ? "tag" : "home";
+    return k == MT_MISSION_KIND_NAV    ? "nav"
+           : k == MT_MISSION_KIND_DO   ? "do"
+           : k == MT_MISSION_KIND_JUMP ? "jump"
+           : k == MT_MISSION_KIND_TAG  ? "tag"
+                                       : "home";
 }
 
 static void write_mission(void)
@@ -207,11 +224,13 @@ static void write_mission(void)
     }
     fputs(">>\nTTgt == <<", g_out);
     for (i = 1u; i < g_m.total; i++) {
-        fprintf(g_out, "%s%u", i > 1u ? ", " : "", g_m.kind[i] == MT_MISSION_KIND_JUMP ? g_m.target[i] : 0u);
+        fprintf(g_out, "%s%u", i > 1u ? ", " : "",
+                g_m.kind[i] == MT_MISSION_KIND_JUMP ? g_m.target[i] : 0u);
     }
     fputs(">>\nTRep == <<", g_out);
     for (i = 1u; i < g_m.total; i++) {
-        fprintf(g_out, "%s%d", i > 1u ? ", " : "", g_m.kind[i] == MT_MISSION_KIND_JUMP ? g_m.repeat[i] : 0);
+        fprintf(g_out, "%s%d", i > 1u ? ", " : "",
+                g_m.kind[i] == MT_MISSION_KIND_JUMP ? g_m.repeat[i] : 0);
     }
     fputs(">>\n", g_out);
 }
@@ -233,7 +252,8 @@ static void step(void)
         }
         /* nav part first: callbacks on nav commands and the complete callback */
         for (j = 0u; j < g_ncb && (strcmp(g_cbs[j].k, "done") == 0 ||
-                                   g_m.kind[g_cbs[j].i] == MT_MISSION_KIND_NAV); j++) {
+                                   g_m.kind[g_cbs[j].i] == MT_MISSION_KIND_NAV);
+             j++) {
         }
         emit("update_nav", 0u, rc, 0u, j, 0);
         emit("update_do", 0u, rc, j, g_ncb, 1);
@@ -286,8 +306,10 @@ int main(int argc, char **argv)
         perror(path);
         return 2;
     }
-    fprintf(g_out, "---- MODULE MissionSeqTraceData ----\n"
-            "\\* generated by tools/trace/mission_trace %s %s %s\nEXTENDS Integers\n", argv[1], argv[2], argv[3]);
+    fprintf(g_out,
+            "---- MODULE MissionSeqTraceData ----\n"
+            "\\* generated by tools/trace/mission_trace %s %s %s\nEXTENDS Integers\n",
+            argv[1], argv[2], argv[3]);
     write_mission();
     fputs("Trace == <<\n", g_out);
     /* the first call starts the mission; then random operations */
