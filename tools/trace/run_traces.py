@@ -112,9 +112,13 @@ def write_sem_cfg(path):
 
 
 def write_mission_cfg(path):
+    # the model's invariants hold on every state of the trace too (the tags_do mission
+    # has no model configuration of its own); TraceNotAccepted comes last
     with open(path, "w") as f:
         f.write("CONSTANTS\n    N <- TN\n    Kind <- TKind\n    Tgt <- TTgt\n    Rep <- TRep\n"
-                "    NONE = 0\nSPECIFICATION TraceSpec\nINVARIANT TraceNotAccepted\n")
+                "    NONE = 0\nSPECIFICATION TraceSpec\n"
+                "INVARIANTS TypeOK CursorsValid CountersBounded NoCallbackSeesJump CompleteOncePerRun\n"
+                "    LookAheadBounded LookAheadMatches TraceNotAccepted\n")
 
 
 def mutate_mission(data_path, variant):
