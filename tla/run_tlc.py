@@ -5,7 +5,9 @@
 Each manifest entry names a module, a config and the expected result: "pass"
 (no error; the distinct-state count must equal the pinned one), or the name of
 the invariant or temporal property a broken variant must violate, or
-"deadlock". A run fails on any other outcome, on a missing or different
+"deadlock". Optional fields: "deps", modules the module EXTENDS (copied
+beside it), and "tlc_args", extra TLC options (e.g. ["-deadlock"] for a spec
+with a terminal state). A run fails on any other outcome, on a missing or different
 pinned count for a passing model, on a TLC error, or on a timeout.
 
     tla/run_tlc.py                  CI configurations (deep == false)
@@ -87,14 +89,15 @@ def run_one(entry, args):
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     module = entry["module"]
-    shutil.copy(os.path.join(HERE, module + ".tla"), work)
+    for mod in [module] + entry.get("deps", []):
+        shutil.copy(os.path.join(HERE, mod + ".tla"), work)
     cfg_src = os.path.join(HERE, entry["config"])
     cfg = os.path.basename(cfg_src)
     shutil.copy(cfg_src, os.path.join(work, cfg))
     with open(cfg_src) as f:
         props = cfg_properties(f.read())
     cmd = ["java", "-XX:+UseParallelGC", "-Xmx" + args.heap, "-cp", args.jar, "tlc2.TLC",
-           "-workers", "auto", "-cleanup",
+           "-workers", "auto", "-cleanup"] + entry.get("tlc_args", []) + [
            "-metadir", os.path.join(work, "states"), "-config", cfg, module + ".tla"]
     timeout = entry.get("timeout_s", args.timeout)
     t0 = time.monotonic()

@@ -6,6 +6,8 @@ Inputs (each written by its own gate; a missing one is reported as "not run"):
   build/proof/wp/summary.json      Frama-C WP (proofs/wp/gate.py)
   build/proof/cbmc/summary.json    CBMC harnesses (proofs/cbmc)
   build/proof/tla/summary.json     TLC models (tla/run_tlc.py)
+  build/proof/tla/trace-mission/summary.json  mission trace validation
+                                   (make tla-trace-mission), optional
   build/proof/selftest/summary.json  mutation check (tools/prove_selftest.py), optional
   build/proof/versions.txt         tool versions printed at the start of the run
   build/proof/timing.json          wall time per part (written by the Makefile)
@@ -65,6 +67,7 @@ def main():
     tla = load(f"{BUILD}/proof/tla/summary.json")
     translator = load(f"{BUILD}/proof/cbmc/test/summary.json")
     selftest = load(f"{BUILD}/proof/selftest/summary.json")
+    trace = load(f"{BUILD}/proof/tla/trace-mission/summary.json")
     timing = load(f"{BUILD}/proof/timing.json") or {}
     assumptions = load("proofs/assumptions.json") or []
     baseline = load("proofs/baseline.json") or {}
@@ -77,6 +80,7 @@ def main():
     problems = []
     summary = {
         "wp": None, "cbmc": None, "tla": None, "translator": None, "selftest": None,
+        "tla_trace": None,
         "assumptions": assumptions, "timing": timing, "versions": versions.splitlines(),
     }
 
@@ -126,6 +130,12 @@ def main():
         if selftest.get("killed", 0) != selftest.get("mutants", 0):
             problems.append(f"mutation check: {selftest.get('killed', 0)}/{selftest.get('mutants', 0)} killed")
 
+    if trace is not None:
+        summary["tla_trace"] = {"traces": trace.get("total", 0), "passed": trace.get("passed", 0)}
+        if trace.get("passed", 0) != trace.get("total", 0) or trace.get("total", 0) == 0:
+            problems.append(f"TLA+ trace validation: {trace.get('passed', 0)}/{trace.get('total', 0)} "
+                            "traces and controls as expected")
+
     # Baseline: no count may go down.
     counts = {
         "wp.proved": (summary["wp"] or {}).get("proved", 0),
@@ -136,6 +146,8 @@ def main():
     }
     if summary["selftest"] is not None:
         counts["selftest.killed"] = summary["selftest"]["killed"]
+    if summary["tla_trace"] is not None:
+        counts["tla_trace.passed"] = summary["tla_trace"]["passed"]
     regressions = []
     for key, base in sorted(baseline.items()):
         if key in counts and isinstance(base, int) and counts[key] < base:
@@ -180,7 +192,13 @@ def main():
     tl_cases = [case("tla", m.get("name", "?"), m.get("ok", False),
                      f"expected {m.get('expect')}, got {m.get('result')}",
                      float(m.get("seconds", 0.0))) for m in (tla or {}).get("models", [])]
-    for name, cases in (("wp", wp_cases), ("cbmc", cb_cases), ("tla", tl_cases)):
+    tt_cases = [case("tla-trace", r.get("name", "?"), r.get("ok", False),
+                     f"expected {r.get('expect')}, got {r.get('result')}",
+                     float(r.get("seconds", 0.0))) for r in (trace or {}).get("traces", [])]
+    groups = [("wp", wp_cases), ("cbmc", cb_cases), ("tla", tl_cases)]
+    if trace is not None:
+        groups.append(("tla-trace", tt_cases))
+    for name, cases in groups:
         fails = sum(1 for c in cases if "<failure" in c)
         suites.append(f'  <testsuite name="{name}" tests="{len(cases)}" failures="{fails}">\n'
                       + "\n".join(cases) + "\n  </testsuite>")
@@ -218,6 +236,10 @@ def main():
     if summary["tla"]:
         t = summary["tla"]
         md.append(f"- TLC: {t['passed']}/{t['models']} model configurations as expected")
+    if summary["tla_trace"]:
+        t = summary["tla_trace"]
+        md.append(f"- Trace validation (mission.c against MissionSeq): {t['passed']}/{t['traces']} "
+                  "traces accepted and controls rejected as expected")
     if summary["translator"]:
         t = summary["translator"]
         md.append(f"- Translator tests (`make cbmc-test`: sample contract, unsupported constructs, one "

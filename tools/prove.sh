@@ -8,6 +8,8 @@
 #   4. make cbmc-test  the translator's tests: sample contract, unsupported constructs, and one
 #                  mutated kernel ensures clause that both CBMC and WP must reject
 #   5. make tla    TLC on every CI configuration of tla/models.json
+#      make tla-trace-mission  trace validation of mission.c against MissionSeq (the ring
+#                  and semaphore traces stay in `make tla-trace` only, as before)
 #   6. tools/proof_report.py   table, build/proof/summary.json, junit.xml, report.md;
 #      fails when any part is not complete or any count is below proofs/baseline.json
 #
@@ -27,8 +29,8 @@ if compgen -G "$OUT/wp/*/session" >/dev/null; then echo warm >"$OUT/cache.txt"; 
 
 declare -A secs=()
 # CBMC joins when its harness farm is in the tree (proofs/cbmc/cbmc.mk).
-default_parts="wp tla"
-[ -f proofs/cbmc/cbmc.mk ] && default_parts="wp cbmc cbmc-test tla"
+default_parts="wp tla tla-trace-mission"
+[ -f proofs/cbmc/cbmc.mk ] && default_parts="wp cbmc cbmc-test tla tla-trace-mission"
 parts=(${PROVE_PARTS:-$default_parts})
 for part in "${parts[@]}"; do
     printf '\n==== make %s\n' "$part"

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""Trace validation of tla/SpscRing.tla and tla/BinSem.tla against the C code.
+"""Trace validation of tla/SpscRing.tla, tla/BinSem.tla and tla/MissionSeq.tla against the C code.
 
 Builds tools/trace/ring_trace against kernel/src/ring.c and objring.c (with
 the tracing mt_atomic.h of tools/trace/shim) and tools/trace/sem_trace against
@@ -14,7 +14,13 @@ matches the next event; the accepted end state stutters). As a control, one
 mutated copy per configuration (one logged index value changed) must be
 rejected.
 
-    tools/trace/run_traces.py [--jar JAR] [--out DIR] [--seeds N]
+tools/trace/mission_trace runs kernel/src/mission.c on fixed missions with
+seeded random operations and callback outcomes; tla/MissionSeqTrace.tla
+replays each log (callbacks in order with index and outcome, cursor state
+after each call). Two controls per mission must be rejected: one logged wpos
+changed ("mutated") and one callback outcome flipped ("flipped").
+
+    tools/trace/run_traces.py [--jar JAR] [--out DIR] [--seeds N] [--only ring sem mission]
 
 Writes <out>/summary.json; exits non-zero on any unexpected result.
 """
@@ -42,8 +48,19 @@ CASES = [
 # sem_trace WAITS SIGNALS per seed
 SEM_CASE = ("sem_posix", 40, 20)
 
+# mission_trace MISSION OPS per seed (missions defined in mission_trace.c)
+MISSION_CASES = [
+    ("mission_nested", "nested", 200),
+    ("mission_forever", "forever", 200),
+    ("mission_tags_do", "tags_do", 200),
+]
+MISSION_SEEDS = 2
+
 RE_LOAD = re.compile(r'k \|-> "load", f \|-> "(\w+)", v \|-> (\d+)\]')
 RE_RESUME = re.compile(r'k \|-> "resume", r \|-> (TRUE|FALSE)\]')
+RE_WPOS = re.compile(r'snap \|-> TRUE, .*?wpos \|-> (\d+)')
+RE_CB = re.compile(r'k \|-> "(?:start|verify)", i \|-> \d+, r \|-> (TRUE|FALSE)\]')
+RE_TN = re.compile(r'^TN == (\d+)$', re.M)
 
 
 KINC = ["-I" + os.path.join(ROOT, "kernel", d) for d in ("include", "port", "spec", "src")]
@@ -68,7 +85,12 @@ def build(out):
                                 os.path.join(ROOT, "hal_posix", "port.c"),
                                 "-Wl," + ",".join("--wrap=" + w for w in WRAP),
                                 "-pthread", "-o", sem], check=True)
-    return ring, sem
+    mission = os.path.join(out, "mission_trace")
+    subprocess.run(cc + ["-Wconversion", "-Wsign-conversion", "-Wshadow", "-Wstrict-prototypes"]
+                   + KINC + [os.path.join(HERE, "mission_trace.c"),
+                             os.path.join(KSRC, "mission.c"),
+                             os.path.join(KSRC, "mission_invoke.c"), "-o", mission], check=True)
+    return ring, sem, mission
 
 
 def write_cfg(path, kind, cap, max_msg, max_len, drop):
@@ -87,6 +109,36 @@ def write_sem_cfg(path):
         f.write("CONSTANTS\n    Waiters = {w1}\n    w1 = w1\n    MaxSignals <- Signals\n"
                 "    InitToken = 0\n    SignalNoResume = FALSE\n    TimeoutIgnoresResume = FALSE\n"
                 "SPECIFICATION TraceSpec\nINVARIANT TraceNotAccepted\n")
+
+
+def write_mission_cfg(path):
+    # the model's invariants hold on every state of the trace too (the tags_do mission
+    # has no model configuration of its own); TraceNotAccepted comes last
+    with open(path, "w") as f:
+        f.write("CONSTANTS\n    N <- TN\n    Kind <- TKind\n    Tgt <- TTgt\n    Rep <- TRep\n"
+                "    NONE = 0\nSPECIFICATION TraceSpec\n"
+                "INVARIANTS TypeOK CursorsValid CountersBounded NoCallbackSeesJump CompleteOncePerRun\n"
+                "    LookAheadBounded LookAheadMatches TraceNotAccepted\n")
+
+
+def mutate_mission(data_path, variant):
+    """Mission: "mutated" changes the wpos of the middle state-carrying event
+    (to the next value in 1..TN); "flipped" flips the outcome of the middle
+    start or verify callback. Returns the index of the changed event (0: none)."""
+    with open(data_path) as f:
+        text = f.read()
+    n = int(RE_TN.search(text).group(1))
+    found = list((RE_WPOS if variant == "mutated" else RE_CB).finditer(text))
+    if not found:
+        return 0
+    m = found[len(found) // 2]
+    if variant == "mutated":
+        v = str(int(m.group(1)) % n + 1)
+    else:
+        v = "FALSE" if m.group(1) == "TRUE" else "TRUE"
+    with open(data_path, "w") as f:
+        f.write(text[:m.start(1)] + v + text[m.end(1):])
+    return text.count("[op |-> ", 0, m.start(1))
 
 
 def mutate(data_path, slots):
@@ -133,50 +185,78 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "build", "proof", "tla", "trace"))
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--timeout", type=int, default=300)
+    ap.add_argument("--only", nargs="+", choices=("ring", "sem", "mission"),
+                    help="run these families only (default: all)")
     args = ap.parse_args()
     args.jar = os.path.abspath(args.jar)
     args.out = os.path.abspath(args.out)
     os.makedirs(args.out, exist_ok=True)
-    ring_exe, sem_exe = build(args.out)
+    ring_exe, sem_exe, mission_exe = build(args.out)
+    families = set(args.only or ("ring", "sem", "mission"))
 
     results = []
     t_all = time.monotonic()
-    jobs = [c for c in CASES] + [SEM_CASE]
+    jobs = []
+    if "ring" in families:
+        jobs += [c for c in CASES]
+    if "sem" in families:
+        jobs.append(SEM_CASE)
+    if "mission" in families:
+        jobs += [c for c in MISSION_CASES]
     for job in jobs:
+        seeds = args.seeds
+        controls = [("mutated", "rejected")]
         if job is SEM_CASE:
             name, waits, signals = job
             kind, cap, max_msg, max_len, drop, slots = "sem", None, None, None, 0, None
             spec, datamod = "BinSemTrace", "BinSemTraceData.tla"
             modules = ("BinSem.tla", "BinSemTrace.tla")
+        elif job in MISSION_CASES:
+            name, mission, ops = job
+            kind, cap, max_msg, max_len, drop, slots = "mission", None, None, None, 0, None
+            spec, datamod = "MissionSeqTrace", "MissionSeqTraceData.tla"
+            modules = ("MissionSeq.tla", "MissionSeqTrace.tla")
+            seeds = min(args.seeds, MISSION_SEEDS)
+            controls = [("mutated", "rejected"), ("flipped", "rejected")]
         else:
             name, kind, cap, max_msg, max_len, drop = job
             slots = cap if kind == "byte" else cap + 1
             spec, datamod = "SpscRingTrace", "SpscRingTraceData.tla"
             modules = ("SpscRing.tla", "SpscRingTrace.tla")
-        for seed in range(1, args.seeds + 1):
+        for seed in range(1, seeds + 1):
             runs = [("trace", "accepted")]
             if seed == 1:
-                runs.append(("mutated", "rejected"))
+                runs += controls
             for variant, expect in runs:
-                label = "%s_s%d%s" % (name, seed, "" if variant == "trace" else "_mutated")
+                label = "%s_s%d%s" % (name, seed, "" if variant == "trace" else "_" + variant)
                 work = os.path.join(args.out, label)
                 shutil.rmtree(work, ignore_errors=True)
                 os.makedirs(work)
                 if kind == "sem":
                     subprocess.run([sem_exe, str(waits), str(signals), str(seed), work],
                                    check=True, stdout=subprocess.DEVNULL)
+                elif kind == "mission":
+                    subprocess.run([mission_exe, mission, str(ops), str(seed), work], check=True)
                 else:
                     subprocess.run([ring_exe, kind, str(cap), str(max_msg), str(max_len),
                                     str(drop), str(seed), work], check=True)
                 data = os.path.join(work, datamod)
                 with open(data) as f:
-                    events = f.read().count("k |-> ")
-                if variant == "mutated" and not mutate(data, slots):
+                    text = f.read()
+                events = text.count("k |-> ") if kind != "mission" else text.count("[op |-> ")
+                changed = 0
+                if kind == "mission" and variant != "trace":
+                    changed = mutate_mission(data, variant)
+                    if not changed:
+                        continue
+                elif variant == "mutated" and not mutate(data, slots):
                     continue
                 for mod in modules:
                     shutil.copy(os.path.join(ROOT, "tla", mod), work)
                 if kind == "sem":
                     write_sem_cfg(os.path.join(work, spec + ".cfg"))
+                elif kind == "mission":
+                    write_mission_cfg(os.path.join(work, spec + ".cfg"))
                 else:
                     write_cfg(os.path.join(work, spec + ".cfg"), kind, cap, max_msg,
                               max_len, drop)
@@ -191,6 +271,28 @@ def main():
                        "max_len": max_len, "drop_oldest": bool(drop), "seed": seed,
                        "events": events, "expect": expect, "result": result,
                        "distinct_states": distinct, "seconds": seconds, "ok": ok}
+                if kind == "mission":
+                    rec["mission"] = mission
+                    rec["ops"] = ops
+                    rec["completions"] = int(re.search(r"^Completions == (\d+)", text, re.M).group(1))
+                    # what the trace exercised: calls per operation and status, refused starts
+                    calls = {}
+                    for op, rc in re.findall(r'\[op \|-> "(\w+)", arg \|-> \d+, rc \|-> "(\w+)"', text):
+                        if op != "update_do":
+                            key = ("update" if op == "update_nav" else op) + ":" + rc
+                            calls[key] = calls.get(key, 0) + 1
+                    rec["calls"] = dict(sorted(calls.items()))
+                    rec["refused_starts"] = text.count('k |-> "start", i |-> ') - len(
+                        re.findall(r'k \|-> "start", i \|-> \d+, r \|-> TRUE', text))
+                stuck = re.findall(r"^/\\ ti = (\d+)", log, re.M)
+                if result == "rejected" and stuck:
+                    rec["unmatched_event"] = int(stuck[-1])   # Trace[ti]: no model step matches
+                if changed:
+                    # a control must fail at the changed event (a flipped outcome of the
+                    # nav half of an update shows at the state check of the do half)
+                    rec["changed_event"] = changed
+                    if rec.get("unmatched_event") not in (changed, changed + 1):
+                        rec["ok"] = ok = False
                 if drop and variant == "trace":
                     # MT_W_DROPPED_OLDEST returns versus objects the consumer discarded
                     with open(data) as f:
@@ -198,9 +300,11 @@ def main():
                     rec["dropped_oldest_returns"] = text.count('"MT_W_DROPPED_OLDEST"')
                     rec["lost"] = int(re.search(r"lost \|-> (\d+)", text).group(1))
                 results.append(rec)
-                print("%-4s %-26s %5d events  %-9s %8s states %6.1f s" % (
+                print("%-4s %-26s %5d events  %-9s %8s states %6.1f s%s" % (
                     "ok" if ok else "FAIL", label, events, result,
-                    distinct if distinct is not None else "-", seconds), flush=True)
+                    distinct if distinct is not None else "-", seconds,
+                    "  (event %d unmatched)" % rec["unmatched_event"]
+                    if "unmatched_event" in rec else ""), flush=True)
     passed = sum(1 for r in results if r["ok"])
     over = [r["name"] for r in results
             if r.get("dropped_oldest_returns", 0) > r.get("lost", 0)]

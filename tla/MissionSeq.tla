@@ -43,7 +43,7 @@ AdvanceFrom(p, c, s, pn) ==
     LET n == Look(p, c, N) IN
     IF n = N \/ n = -1
     THEN Finish /\ wpos' = p /\ cnt' = c /\ lastCb' = lastCb /\ prevNav' = pn
-    ELSE /\ lastCb' = n /\ st' = st /\ dcmd' = NONE /\ ddone' = FALSE /\ runDone' = runDone
+    ELSE /\ lastCb' = n /\ st' = "running" /\ dcmd' = NONE /\ ddone' = FALSE /\ runDone' = runDone
          /\ IF s THEN nav' = n /\ wpos' = p /\ cnt' = c /\ prevNav' = pn
             ELSE LET w == Walk(p, c, FALSE, N) IN
                  /\ nav' = NONE /\ prevNav' = n
@@ -52,7 +52,9 @@ AdvanceFrom(p, c, s, pn) ==
 NavDone == LET w == Walk(wpos, cnt, FALSE, N) IN
            <<IF w[1] < N THEN w[1] + 1 ELSE N, w[2]>>
 
-StartAct == \E s \in BOOLEAN :
+\* mt_mission_start with start outcome s (the *With forms pin the environment's
+\* choices; tla/MissionSeqTrace.tla feeds them from a log of the C code)
+StartWith(s) ==
     LET n == Look(1, [i \in Idx |-> 0], N) IN
     IF n = N \/ n = -1
     THEN /\ st' = "complete" /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ runDone' = 1
@@ -66,7 +68,7 @@ Stop == /\ st = "running" /\ st' = "stopped"
         /\ UNCHANGED <<nav, dcmd, ddone, wpos, cnt, runDone, lastCb, prevNav>>
 
 \* resume from STOPPED with no active nav: advance from the position
-ResumeFix == \E s \in BOOLEAN :
+ResumeFixWith(s) ==
     /\ st = "stopped" /\ nav = NONE
     /\ LET n == Look(wpos, cnt, N) IN
        IF n = N \/ n = -1
@@ -76,19 +78,20 @@ ResumeFix == \E s \in BOOLEAN :
             /\ IF s THEN nav' = n /\ UNCHANGED <<wpos, cnt, prevNav>>
                ELSE LET w == Walk(wpos, cnt, FALSE, N) IN
                     /\ nav' = NONE /\ prevNav' = n /\ wpos' = (IF w[1] < N THEN w[1] + 1 ELSE N) /\ cnt' = w[2]
-\* resume with an active nav: start it (and the do command) again; refused = done
-ResumeRestart == \E s \in BOOLEAN :
+\* resume with an active nav: start it (outcome s) and then the do command
+\* (outcome s2) again; a refused nav = done, and advance() loads the next one
+\* at once (outcome s2) or completes the mission (restart_nav)
+ResumeRestartWith(s, s2) ==
     /\ st = "stopped" /\ nav # NONE
     /\ IF s THEN /\ st' = "running" /\ lastCb' = (IF dcmd # NONE THEN dcmd ELSE nav)
-                 /\ UNCHANGED <<nav, dcmd, ddone, wpos, cnt, runDone, prevNav>>
-       ELSE LET w == NavDone IN
-            /\ st' = "running" /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ prevNav' = nav
-            /\ wpos' = w[1] /\ cnt' = w[2] /\ lastCb' = nav /\ runDone' = runDone
-ResumeComplete == st = "complete" /\ StartAct
-mt_mission_resume == ResumeFix \/ ResumeRestart \/ ResumeComplete
+                 \* the do command's new start (outcome s2): refused = done
+                 /\ dcmd' = (IF dcmd # NONE /\ ~s2 THEN NONE ELSE dcmd)
+                 /\ UNCHANGED <<nav, ddone, wpos, cnt, runDone, prevNav>>
+       ELSE LET w == NavDone IN AdvanceFrom(w[1], w[2], s2, nav)
+ResumeCompleteWith(s) == st = "complete" /\ StartWith(s)
 
 \* set_current while not running: position only (COMPLETE resets counters)
-SetCurrentIdle == \E i \in 0..(N-1) :
+SetCurrentIdleWith(i) ==
     /\ st # "running"
     /\ st' = "stopped" /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE
     /\ wpos' = (IF i = 0 THEN 1 ELSE i)
@@ -97,26 +100,38 @@ SetCurrentIdle == \E i \in 0..(N-1) :
     /\ runDone' = (IF st = "complete" THEN 0 ELSE runDone)   \* a new run begins
     /\ UNCHANGED lastCb
 \* set_current while running: drop both cursors, load the nav at or after i
-SetCurrentRunning == \E i \in 0..(N-1), s \in BOOLEAN :
+SetCurrentRunningWith(i, s) ==
     /\ st = "running"
     /\ LET p == IF i = 0 THEN 1 ELSE i
            c == IF i = 0 THEN [j \in Idx |-> 0] ELSE cnt
-           n == Look(p, c, N) IN
+           n == Look(p, c, N)
+           pn == IF i = 0 THEN NONE ELSE prevNav   \* rewind() when i = 0
+       IN
        IF n = N \/ n = -1
        THEN /\ st' = "complete" /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ runDone' = runDone + 1
-            /\ wpos' = p /\ cnt' = c /\ lastCb' = lastCb /\ prevNav' = prevNav
+            /\ wpos' = p /\ cnt' = c /\ lastCb' = lastCb /\ prevNav' = pn
        ELSE /\ st' = "running" /\ runDone' = runDone /\ lastCb' = n /\ dcmd' = NONE /\ ddone' = FALSE
-            /\ IF s THEN nav' = n /\ wpos' = p /\ cnt' = c /\ prevNav' = prevNav
+            /\ IF s THEN nav' = n /\ wpos' = p /\ cnt' = c /\ prevNav' = pn
                ELSE LET w == Walk(p, c, FALSE, N) IN
                     /\ nav' = NONE /\ prevNav' = n /\ wpos' = (IF w[1] < N THEN w[1] + 1 ELSE N) /\ cnt' = w[2]
 
-\* restart_current: start the nav again; a refusal completes it (next update loads)
-RestartCurrent == \E s \in BOOLEAN :
+\* restart_current (restart_nav): start the nav again (outcome s); a refusal
+\* completes it and advance() loads the next one at once (start outcome s2)
+\* or completes the mission
+RestartCurrentWith(s, s2) ==
     /\ st = "running" /\ nav # NONE
     /\ IF s THEN lastCb' = nav /\ UNCHANGED <<st, nav, dcmd, ddone, wpos, cnt, runDone, prevNav>>
-       ELSE LET w == NavDone IN
-            /\ nav' = NONE /\ dcmd' = NONE /\ ddone' = FALSE /\ prevNav' = nav
-            /\ wpos' = w[1] /\ cnt' = w[2] /\ lastCb' = nav /\ UNCHANGED <<st, runDone>>
+       ELSE LET w == NavDone IN AdvanceFrom(w[1], w[2], s2, nav)
+
+\* the actions with every outcome (and every index) the environment may choose
+StartAct == \E s \in BOOLEAN : StartWith(s)
+ResumeFix == \E s \in BOOLEAN : ResumeFixWith(s)
+ResumeRestart == \E s, s2 \in BOOLEAN : ResumeRestartWith(s, s2)
+ResumeComplete == \E s \in BOOLEAN : ResumeCompleteWith(s)
+mt_mission_resume == ResumeFix \/ ResumeRestart \/ ResumeComplete
+SetCurrentIdle == \E i \in 0..(N-1) : SetCurrentIdleWith(i)
+SetCurrentRunning == \E i \in 0..(N-1), s \in BOOLEAN : SetCurrentRunningWith(i, s)
+RestartCurrent == \E s, s2 \in BOOLEAN : RestartCurrentWith(s, s2)
 
 \* mt_mission_update, nav part (vn: verify outcome, sn: start outcome)
 UpdateNav(vn, sn) ==
@@ -141,9 +156,11 @@ DoPart(vd, sd) ==
 \* separate step flag would double the state space; instead the C order
 \* (nav then do) is modelled as two steps that no other action can split.
 VARIABLE phase
-UpdateA == \E vn, sn \in BOOLEAN : phase = "idle" /\ UpdateNav(vn, sn) /\ phase' = "do"
-UpdateB == \E vd, sd \in BOOLEAN : phase = "do" /\ phase' = "idle" /\ DoPart(vd, sd)
-           /\ UNCHANGED <<st, nav, runDone, prevNav>>
+UpdateAWith(vn, sn) == phase = "idle" /\ UpdateNav(vn, sn) /\ phase' = "do"
+UpdateBWith(vd, sd) == phase = "do" /\ phase' = "idle" /\ DoPart(vd, sd)
+                       /\ UNCHANGED <<st, nav, runDone, prevNav>>
+UpdateA == \E vn, sn \in BOOLEAN : UpdateAWith(vn, sn)
+UpdateB == \E vd, sd \in BOOLEAN : UpdateBWith(vd, sd)
 UpdateGoodA == phase = "idle" /\ UpdateNav(TRUE, TRUE) /\ phase' = "do"
 UpdateGoodB == phase = "do" /\ phase' = "idle" /\ DoPart(TRUE, TRUE) /\ UNCHANGED <<st, nav, runDone, prevNav>>
 
