@@ -380,15 +380,6 @@ static uint8_t node_safe(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
     return ((tgt != 0u) && (next != 0u)) ? 1u : 0u;
 }
 
-/*@ lemma MtMissionInv_kept{L1, L2}:
-      \forall mt_mission_t *m;
-        MtMissionInv{L1}(m) ==> MtMissionActiveUnchanged{L1, L2}(m) ==>
-        \at(m->start_fn, L1) == \at(m->start_fn, L2) ==>
-        \at(m->verify_fn, L1) == \at(m->verify_fn, L2) ==>
-        \at(m->complete_fn, L1) == \at(m->complete_fn, L2) ==>
-        MtMissionInv{L2}(m);
-*/
-
 /* mt_mission_check without the mission object (which it does not need). */
 /*@ requires cmds: n < 1 || n > MT_CFG_MISSION_MAX_CMDS || MtMissionCmdsIn(cmds, n);
     requires bad: \valid(bad) && \separated(bad, cmds + (0 .. n - 1));
@@ -494,6 +485,10 @@ mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds
     mt_status_t st = check_list(cmds, n, bad);
 
     /*@ assert kept: MtMissionActiveUnchanged{Pre, Here}(m); */
+    /*@ assert kinds: MtMissionKinds(m); */
+    /*@ assert jumps: MtMissionJumps(m); */
+    /*@ assert counters: MtMissionCounters(m); */
+    /*@ assert cursors: MtMissionCursors(m); */
     return st;
 }
 
@@ -525,7 +520,15 @@ static void copy_cmd(mt_mission_cmd_t *dst, const mt_mission_cmd_t *src)
     assigns m->cmd[i].id, m->cmd[i].frame, m->cmd[i].options, m->cmd[i].param[0 .. 3],
             m->cmd[i].x, m->cmd[i].y, m->cmd[i].z,
             m->kind[i], m->target[i], m->repeat[i], m->count[i];
-    ensures MtMissionEntryOk(m, i, n);
+    ensures kind: (m->kind[i] == MT_MISSION_KIND_NAV || m->kind[i] == MT_MISSION_KIND_DO ||
+             m->kind[i] == MT_MISSION_KIND_JUMP || m->kind[i] == MT_MISSION_KIND_TAG) &&
+            (m->kind[i] == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(m->cmd[i].id)) &&
+            (m->kind[i] == MT_MISSION_KIND_TAG <==> m->cmd[i].id == MT_MAV_CMD_JUMP_TAG);
+    ensures jump: (m->kind[i] == MT_MISSION_KIND_JUMP ==>
+                1 <= m->target[i] < n && -1 <= m->repeat[i] <= MT_MISSION_REPEAT_MAX);
+    ensures counter: (m->kind[i] == MT_MISSION_KIND_JUMP ==>
+                (m->repeat[i] >= 0 ==> 0 <= m->count[i] <= m->repeat[i]) &&
+                (m->repeat[i] < 0 ==> m->count[i] == 0));
     ensures MtMissionSameCmd(&m->cmd[i], c);
 */
 static void put_cmd(mt_mission_t *m, uint16_t i, const mt_mission_cmd_t *c, uint16_t tgt, uint16_t n)
@@ -546,12 +549,24 @@ static void put_cmd(mt_mission_t *m, uint16_t i, const mt_mission_cmd_t *c, uint
     }
 }
 
-/* Cursors of a freshly applied list of n commands. */
+/* Cursors of a freshly applied list of n commands (entries already stored). */
 /*@ requires \valid(m) && 1 <= n <= MT_CFG_MISSION_MAX_CMDS;
+    requires home: m->kind[0] == MT_MISSION_KIND_HOME;
+    requires kinds: \forall integer j; 1 <= j < n ==>
+            (m->kind[j] == MT_MISSION_KIND_NAV || m->kind[j] == MT_MISSION_KIND_DO ||
+             m->kind[j] == MT_MISSION_KIND_JUMP || m->kind[j] == MT_MISSION_KIND_TAG) &&
+            (m->kind[j] == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(m->cmd[j].id)) &&
+            (m->kind[j] == MT_MISSION_KIND_TAG <==> m->cmd[j].id == MT_MAV_CMD_JUMP_TAG);
+    requires jumps: \forall integer j; 1 <= j < n ==> (m->kind[j] == MT_MISSION_KIND_JUMP ==>
+                1 <= m->target[j] < n && -1 <= m->repeat[j] <= MT_MISSION_REPEAT_MAX);
+    requires counters: \forall integer j; 1 <= j < n ==> (m->kind[j] == MT_MISSION_KIND_JUMP ==>
+                (m->repeat[j] >= 0 ==> 0 <= m->count[j] <= m->repeat[j]) &&
+                (m->repeat[j] < 0 ==> m->count[j] == 0));
     assigns m->total, m->generation, m->state, m->do_done, m->nav, m->do_cmd, m->wpos, m->prev_nav;
     ensures m->total == n && m->state == MT_MISSION_STOPPED && m->wpos == 1 && m->do_done == 0;
     ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->prev_nav == MT_MISSION_NONE;
     ensures m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF;
+    ensures tables: MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m);
 */
 static void reset_cursors(mt_mission_t *m, uint16_t n)
 {
@@ -567,13 +582,6 @@ static void reset_cursors(mt_mission_t *m, uint16_t n)
     m->prev_nav = MT_MISSION_NONE;
 }
 
-/*@ lemma MtMissionEntries_tables:
-      \forall mt_mission_t *m;
-        (\forall integer j; 1 <= j < m->total ==> MtMissionEntryOk(m, j, m->total)) ==>
-        m->kind[0] == MT_MISSION_KIND_HOME ==>
-        MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m);
-*/
-
 /* Entries 1 .. n-1 from the checked list (home is stored by apply). */
 /*@ requires \valid(m) && 1 <= n <= MT_CFG_MISSION_MAX_CMDS;
     requires \separated(m, mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
@@ -581,15 +589,32 @@ static void reset_cursors(mt_mission_t *m, uint16_t n)
     requires \separated(cmds + (0 .. n - 1), m);
     assigns m->cmd[1 .. n - 1], m->kind[1 .. n - 1], m->target[1 .. n - 1], m->repeat[1 .. n - 1],
             m->count[1 .. n - 1];
-    ensures \forall integer j; 1 <= j < n ==> MtMissionEntryOk(m, j, n);
+    ensures kinds: \forall integer j; 1 <= j < n ==>
+            (m->kind[j] == MT_MISSION_KIND_NAV || m->kind[j] == MT_MISSION_KIND_DO ||
+             m->kind[j] == MT_MISSION_KIND_JUMP || m->kind[j] == MT_MISSION_KIND_TAG) &&
+            (m->kind[j] == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(m->cmd[j].id)) &&
+            (m->kind[j] == MT_MISSION_KIND_TAG <==> m->cmd[j].id == MT_MAV_CMD_JUMP_TAG);
+    ensures jumps: \forall integer j; 1 <= j < n ==> (m->kind[j] == MT_MISSION_KIND_JUMP ==>
+                1 <= m->target[j] < n && -1 <= m->repeat[j] <= MT_MISSION_REPEAT_MAX);
+    ensures counters: \forall integer j; 1 <= j < n ==> (m->kind[j] == MT_MISSION_KIND_JUMP ==>
+                (m->repeat[j] >= 0 ==> 0 <= m->count[j] <= m->repeat[j]) &&
+                (m->repeat[j] < 0 ==> m->count[j] == 0));
 */
 static void put_all(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
 {
     uint16_t i;
 
     /*@ loop invariant 1 <= i <= n;
-        loop invariant \forall integer j; 1 <= j < i ==>
-            MtMissionEntryVals(m->kind[j], m->cmd[j].id, m->target[j], m->repeat[j], m->count[j], n);
+        loop invariant kinds: \forall integer j; 1 <= j < i ==>
+            (m->kind[j] == MT_MISSION_KIND_NAV || m->kind[j] == MT_MISSION_KIND_DO ||
+             m->kind[j] == MT_MISSION_KIND_JUMP || m->kind[j] == MT_MISSION_KIND_TAG) &&
+            (m->kind[j] == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(m->cmd[j].id)) &&
+            (m->kind[j] == MT_MISSION_KIND_TAG <==> m->cmd[j].id == MT_MAV_CMD_JUMP_TAG);
+        loop invariant jumps: \forall integer j; 1 <= j < i ==> (m->kind[j] == MT_MISSION_KIND_JUMP ==>
+                1 <= m->target[j] < n && -1 <= m->repeat[j] <= MT_MISSION_REPEAT_MAX);
+        loop invariant counters: \forall integer j; 1 <= j < i ==> (m->kind[j] == MT_MISSION_KIND_JUMP ==>
+                (m->repeat[j] >= 0 ==> 0 <= m->count[j] <= m->repeat[j]) &&
+                (m->repeat[j] < 0 ==> m->count[j] == 0));
         loop assigns i, m->cmd[1 .. n - 1], m->kind[1 .. n - 1], m->target[1 .. n - 1],
                      m->repeat[1 .. n - 1], m->count[1 .. n - 1];
         loop variant n - i;
@@ -599,8 +624,11 @@ static void put_all(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
     }
 }
 
-/* Make the checked list the active mission. Cannot fail. */
-/*@ requires MtMissionInv(m);
+/* Make the checked list the active mission. Cannot fail. (Only the parts of
+ * the invariant it keeps are required: small contexts keep the goals fast.) */
+/*@ requires \valid(m) && \separated(m, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                                     mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
+    requires m->start_fn != \null && m->verify_fn != \null && m->complete_fn != \null;
     requires MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
     requires \separated(cmds + (0 .. n - 1), m);
     assigns m->cmd[0 .. n - 1], m->kind[0 .. n - 1], m->target[0 .. n - 1], m->repeat[0 .. n - 1],
@@ -613,19 +641,16 @@ static void put_all(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
 */
 static void apply(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
 {
-    reset_cursors(m, n);
     copy_cmd(&m->cmd[0], &cmds[0]);
     m->kind[0] = MT_MISSION_KIND_HOME;
     m->target[0] = 0u;
     m->repeat[0] = 0;
     m->count[0] = 0;
     put_all(m, cmds, n);
-    /*@ assert entries: \forall integer j; 1 <= j < m->total ==> MtMissionEntryOk(m, j, m->total); */
+    reset_cursors(m, n);
     /*@ assert home: m->kind[0] == MT_MISSION_KIND_HOME; */
     /*@ assert tables: MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m); */
     /*@ assert cursors: MtMissionCursors(m); */
-    /*@ assert scalars: 0 <= m->total <= MT_CFG_MISSION_MAX_CMDS &&
-            m->start_fn != \null && m->verify_fn != \null && m->complete_fn != \null; */
 }
 
 mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
@@ -635,6 +660,10 @@ mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint1
     if (m->state == MT_MISSION_RUNNING) {
         *bad = MT_MISSION_NONE;
         /*@ assert kept: MtMissionActiveUnchanged{Pre, Here}(m); */
+        /*@ assert kinds: MtMissionKinds(m); */
+        /*@ assert jumps: MtMissionJumps(m); */
+        /*@ assert counters: MtMissionCounters(m); */
+        /*@ assert cursors: MtMissionCursors(m); */
         return MT_E_STATE;
     }
     st = mt_mission_check(m, cmds, n, bad);

@@ -210,20 +210,6 @@ extern uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
         \forall integer i; 1 <= i < n ==> MtMissionIsJumpId(c[i].id) ==>
             1 <= tgt[i] < n && MtMissionRepeatOk(c[i].param[1]);
 
-    // The values of one command of an active list of n commands are well formed
-    // (one index of MtMissionKinds, MtMissionJumps and MtMissionCounters).
-    predicate MtMissionEntryVals(integer kind, integer id, integer target, integer repeat,
-                                 integer count, integer n) =
-        (kind == MT_MISSION_KIND_NAV || kind == MT_MISSION_KIND_DO ||
-         kind == MT_MISSION_KIND_JUMP || kind == MT_MISSION_KIND_TAG) &&
-        (kind == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(id)) &&
-        (kind == MT_MISSION_KIND_TAG <==> id == MT_MAV_CMD_JUMP_TAG) &&
-        (kind == MT_MISSION_KIND_JUMP ==>
-            1 <= target < n && -1 <= repeat <= MT_MISSION_REPEAT_MAX && count == 0);
-
-    predicate MtMissionEntryOk(mt_mission_t *m, integer i, integer n) =
-        MtMissionEntryVals(m->kind[i], m->cmd[i].id, m->target[i], m->repeat[i], m->count[i], n);
-
     predicate MtMissionSameCmd(mt_mission_cmd_t *a, mt_mission_cmd_t *b) =
         a->id == b->id && a->frame == b->frame && a->options == b->options &&
         a->param[0] == b->param[0] && a->param[1] == b->param[1] &&
