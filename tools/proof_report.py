@@ -130,7 +130,9 @@ def main():
         if selftest.get("killed", 0) != selftest.get("mutants", 0):
             problems.append(f"mutation check: {selftest.get('killed', 0)}/{selftest.get('mutants', 0)} killed")
 
-    if trace is not None:
+    if trace is None:
+        absent("tla_trace", "TLA+ trace validation summary missing: make tla-trace-mission did not run")
+    else:
         summary["tla_trace"] = {"traces": trace.get("total", 0), "passed": trace.get("passed", 0)}
         if trace.get("passed", 0) != trace.get("total", 0) or trace.get("total", 0) == 0:
             problems.append(f"TLA+ trace validation: {trace.get('passed', 0)}/{trace.get('total', 0)} "

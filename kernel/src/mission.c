@@ -105,7 +105,7 @@ static const cmd_info_t k_cmds[N_CMDS] = {
 };
 
 #if !defined(__FRAMAC__)
-_Static_assert(sizeof k_cmds / sizeof k_cmds[0] == N_CMDS, "N_CMDS must match the table");
+_Static_assert((sizeof(k_cmds) / sizeof(k_cmds[0])) == N_CMDS, "N_CMDS must match the table");
 #endif
 
 /* Position of id in the table, or N_CMDS. Bounded by the table size. */
@@ -248,7 +248,7 @@ static mt_status_t special_ok(const mt_mission_cmd_t *c)
     switch (c->id) {
     case MT_MAV_CMD_CONDITION_YAW:
         /* angle [0, 360] deg, direction -1/0/1, relative 0/1 */
-        if ((p[0] < 0) || (p[0] > 360 * MT_MISSION_MILLI) ||
+        if ((p[0] < 0) || (p[0] > (360 * MT_MISSION_MILLI)) ||
             ((p[2] != -MT_MISSION_MILLI) && (p[2] != 0) && (p[2] != MT_MISSION_MILLI)) ||
             ((p[3] != 0) && (p[3] != MT_MISSION_MILLI))) {
             return MT_E_MISSION_PARAM;
@@ -256,7 +256,7 @@ static mt_status_t special_ok(const mt_mission_cmd_t *c)
         break;
     case MT_MAV_CMD_DO_CHANGE_SPEED:
         /* speed type 0..3; speed >= -2 (AP: -1 no change, -2 default) */
-        if ((p[0] < 0) || (p[0] > 3 * MT_MISSION_MILLI) || (p[1] < -2 * MT_MISSION_MILLI)) {
+        if ((p[0] < 0) || (p[0] > (3 * MT_MISSION_MILLI)) || (p[1] < (-2 * MT_MISSION_MILLI))) {
             return MT_E_MISSION_PARAM;
         }
         break;
@@ -267,13 +267,13 @@ static mt_status_t special_ok(const mt_mission_cmd_t *c)
         break;
     case MT_MAV_CMD_DO_SET_SERVO:
         /* channel 1..32, pwm 0..65535 */
-        if ((p[0] < MT_MISSION_MILLI) || (p[0] > 32 * MT_MISSION_MILLI) ||
-            (p[1] > 65535 * MT_MISSION_MILLI)) {
+        if ((p[0] < MT_MISSION_MILLI) || (p[0] > (32 * MT_MISSION_MILLI)) ||
+            (p[1] > (65535 * MT_MISSION_MILLI))) {
             return MT_E_MISSION_PARAM;
         }
         break;
     case MT_MAV_CMD_JUMP_TAG:
-        if (p[0] > 65535 * MT_MISSION_MILLI) {
+        if (p[0] > (65535 * MT_MISSION_MILLI)) {
             return MT_E_MISSION_PARAM;
         }
         break;
@@ -325,8 +325,10 @@ mt_status_t mt_mission_check_cmd(const mt_mission_cmd_t *cmds, uint16_t n, uint1
                 ((c->param[0] / MT_MISSION_MILLI) >= (int32_t)n)) {
                 return MT_E_MISSION_JUMP;
             }
-        } else if ((c->param[0] < 0) || (c->param[0] > 65535 * MT_MISSION_MILLI)) {
+        } else if ((c->param[0] < 0) || (c->param[0] > (65535 * MT_MISSION_MILLI))) {
             return MT_E_MISSION_JUMP;
+        } else {
+            /* a tag in range */
         }
     }
     return MT_OK;
@@ -362,7 +364,7 @@ static uint16_t find_tag(const mt_mission_cmd_t *cmds, uint16_t n, int32_t tag)
 static uint8_t node_safe(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
 {
     uint16_t id = cmds[i].id;
-    uint8_t next = (i + 1u >= n) ? 1u : mt_mission_scratch_safe[i + 1u];
+    uint8_t next = ((i + 1u) >= n) ? 1u : mt_mission_scratch_safe[i + 1u];
     int32_t rep;
     uint8_t tgt;
 
@@ -404,7 +406,6 @@ static mt_status_t check_list(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t
 {
     uint16_t i;
     uint32_t round;
-    mt_status_t st;
     int changed;
 
     *bad = 0u;
@@ -415,18 +416,19 @@ static mt_status_t check_list(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t
     /*@ loop invariant 0 <= i <= n;
         loop invariant \forall integer j; 1 <= j < i ==> MtMissionIsJumpId(cmds[j].id) ==>
             1 <= mt_mission_scratch_target[j] < n && MtMissionRepeatOk(cmds[j].param[1]);
-        loop assigns i, st, mt_mission_scratch_target[0 .. n - 1], *bad;
+        loop assigns i, mt_mission_scratch_target[0 .. n - 1], *bad;
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {
-        st = mt_mission_check_cmd(cmds, n, i);
+        mt_status_t st = mt_mission_check_cmd(cmds, n, i);
         if (st != MT_OK) {
             *bad = i;
             return st;
         }
         mt_mission_scratch_target[i] = 0u;
         if ((i >= 1u) && (cmds[i].id == MT_MAV_CMD_DO_JUMP)) {
-            mt_mission_scratch_target[i] = (uint16_t)(cmds[i].param[0] / MT_MISSION_MILLI);
+            int32_t tgt = cmds[i].param[0] / MT_MISSION_MILLI;
+            mt_mission_scratch_target[i] = (uint16_t)tgt;
         } else if ((i >= 1u) && (cmds[i].id == MT_MAV_CMD_DO_JUMP_TAG)) {
             uint16_t t = find_tag(cmds, n, cmds[i].param[0]);
             if (t >= n) {
@@ -434,6 +436,8 @@ static mt_status_t check_list(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t
                 return MT_E_MISSION_JUMP;
             }
             mt_mission_scratch_target[i] = t;
+        } else {
+            /* not a jump: no target */
         }
     }
     /* 2. loop check: mark the nodes from which every walk reaches a nav command or
@@ -484,6 +488,7 @@ mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds
 {
     mt_status_t st = check_list(cmds, n, bad);
 
+    (void)m; /* the active mission is not needed to check a candidate */
     /*@ assert kept: MtMissionActiveUnchanged{Pre, Here}(m); */
     /*@ assert kinds: MtMissionKinds(m); */
     /*@ assert jumps: MtMissionJumps(m); */
@@ -535,6 +540,7 @@ static void put_cmd(mt_mission_t *m, uint16_t i, const mt_mission_cmd_t *c, uint
 {
     uint8_t k = mt_mission_kind_of(c->id);
 
+    (void)n; /* the contract's bound on tgt */
     if (k == MT_MISSION_KIND_HOME) {
         k = MT_MISSION_KIND_DO; /* unreachable after the check */
     }
@@ -824,6 +830,28 @@ static void nav_done(mt_mission_t *m)
     }
 }
 
+/* No active do command; the do walk starts again. */
+/*@ requires MtMissionInv(m);
+    assigns m->do_cmd, m->do_done;
+    ensures MtMissionInv(m) && m->do_cmd == MT_MISSION_NONE && m->do_done == 0;
+*/
+static void drop_do(mt_mission_t *m)
+{
+    m->do_cmd = MT_MISSION_NONE;
+    m->do_done = 0u;
+}
+
+/* Nav command p becomes the active one (no do command is active). */
+/*@ requires MtMissionInv(m) && MtMissionIdx(m, p) && m->kind[p] == MT_MISSION_KIND_NAV;
+    requires m->do_cmd == MT_MISSION_NONE;
+    assigns m->nav;
+    ensures MtMissionInv(m) && m->nav == p;
+*/
+static void set_nav(mt_mission_t *m, uint16_t p)
+{
+    m->nav = p;
+}
+
 /* Load the next nav command (none is active): one start attempt; a refused
  * start consumes the command; the end of the walk completes the mission. */
 /*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
@@ -839,16 +867,15 @@ static void advance(mt_mission_t *m)
 {
     uint16_t n = MT_MISSION_NONE;
 
-    m->do_cmd = MT_MISSION_NONE;
-    m->do_done = 0u;
+    drop_do(m);
     if (mt_mission_next_nav(m, m->wpos, &n) != MT_OK) {
         finish(m);
         return;
     }
     if (mt_mission_invoke_cmd(m->start_fn, m->ctx, n, &m->cmd[n])) {
-        m->nav = n;
+        set_nav(m, n);
     } else {
-        m->nav = n;
+        set_nav(m, n);
         nav_done(m);
     }
 }
@@ -858,7 +885,7 @@ static void advance(mt_mission_t *m)
     ensures MtMissionInv(m);
     ensures m->wpos == 1 && m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
 */
-static void rewind(mt_mission_t *m)
+static void rewind_walk(mt_mission_t *m)
 {
     uint16_t i;
 
@@ -882,7 +909,7 @@ mt_status_t mt_mission_start(mt_mission_t *m)
     if (m->total < 2u) {
         return MT_E_EMPTY;
     }
-    rewind(m);
+    rewind_walk(m);
     m->state = MT_MISSION_RUNNING;
     advance(m);
     return MT_OK;
@@ -983,7 +1010,7 @@ mt_status_t mt_mission_set_current(mt_mission_t *m, uint16_t i)
         return MT_E_INVALID;
     }
     if ((i == 0u) || (m->state == MT_MISSION_COMPLETE)) {
-        rewind(m);
+        rewind_walk(m);
     }
     reposition(m, (uint16_t)((i == 0u) ? 1u : i));
     if (m->state == MT_MISSION_RUNNING) {
@@ -1044,6 +1071,8 @@ mt_status_t mt_mission_update(mt_mission_t *m)
     } else if (mt_mission_invoke_cmd(m->verify_fn, m->ctx, m->nav, &m->cmd[m->nav])) {
         nav_done(m);
         advance(m);
+    } else {
+        /* the active nav command is still running */
     }
     if ((m->state == MT_MISSION_RUNNING) && (m->nav != MT_MISSION_NONE)) {
         do_step(m);
