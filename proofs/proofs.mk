@@ -4,12 +4,13 @@
 #   make prove          tools/bootstrap.sh prove, then every proof part (for now: wp)
 #   make wp             Frama-C/WP on every kernel module + the data-type laws, 2 modules at a
 #                       time, then proofs/wp/gate.py (fails unless 100 % goals + smoke tests)
-#   make wp-<module>    one module (status time sem proc ring objring sched laws), no gate
+#   make wp-<module>    one module (status time sem proc ring objring sched mission laws), no gate
 #   make wp-gate        the gate alone, on the last reports
 #   make wp-diversity   Z3 alone and CVC4 alone, regenerates proofs/wp/diversity.md
 #   make wp-clean       drop the WP sessions and caches
 #
-# kernel/src/invoke.c is not analysed: it is assumption A1 (kernel/src/mt_invoke.h).
+# kernel/src/invoke.c and mission_invoke.c are not analysed: assumption A1 (kernel/src/mt_invoke.h,
+# kernel/src/mt_mission_invoke.h).
 
 BUILD ?= build
 
