@@ -20,11 +20,19 @@ static_assert(MT_E_INVALID == 1 && MT_E_FULL == 2 && MT_E_EMPTY == 3 && MT_E_DUP
 static_assert(MT_E_TIMEOUT == 5 && MT_E_BUSY == 6 && MT_E_RANGE == 7, "");
 static_assert(MT_E_TASK_ORDER == 8 && MT_E_TASK_RATE == 9 && MT_E_TASK_BUDGET == 10, "");
 static_assert(MT_E_TASK_COUNT == 11 && MT_E_LOOP_RATE == 12 && MT_E_TASK_FN == 13, "");
-static_assert(MT_W_DROPPED_OLDEST == 14 && MT_STATUS_COUNT == 15, "");
+static_assert(MT_W_DROPPED_OLDEST == 14 && MT_E_MISSION_CMD == 15 && MT_E_MISSION_PARAM == 16, "");
+static_assert(MT_E_MISSION_LOCATION == 17 && MT_E_MISSION_FRAME == 18 && MT_E_MISSION_JUMP == 19, "");
+static_assert(MT_E_MISSION_LOOP == 20 && MT_E_MISSION_SIZE == 21 && MT_E_MISSION_SYNTAX == 22, "");
+static_assert(MT_E_STATE == 23 && MT_STATUS_COUNT == 24, "");
 
 // configuration defaults
 static_assert(MT_CFG_VERSION == 1, "");
 static_assert(MT_CFG_SCHED_MAX_TASKS == 64u && MT_CFG_PROC_MAX == 8u, "");
+static_assert(MT_CFG_MISSION_MAX_CMDS == 700u, "");
+
+// mission commands: 32 bytes, no padding
+static_assert(sizeof(mt_mission_cmd_t) == 32u, "");
+static_assert(std::is_standard_layout<mt_mission_t>::value, "C layout");
 
 // rings: producer and consumer halves on separate cache lines
 static_assert(std::is_standard_layout<mt_bring_t>::value, "C layout");

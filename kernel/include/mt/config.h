@@ -36,7 +36,7 @@
 
 /** Capacity of the mission command list, home (index 0) included (ArduPilot:
  *  storage-dependent, 724 on a 16 KiB FRAM). Indices are 16-bit; the mission
- *  module keeps about 34 bytes of RAM per command (see mt/mission.h). */
+ *  module keeps 39 bytes of RAM per command (see mt/mission.h). */
 #if !defined(MT_CFG_MISSION_MAX_CMDS)
 #define MT_CFG_MISSION_MAX_CMDS 700u
 #endif

@@ -107,7 +107,7 @@ extern "C" {
 #define MT_MISSION_RUNNING 1u
 #define MT_MISSION_COMPLETE 2u
 
-/** One mission command as the kernel stores it (24 bytes, no padding). */
+/** One mission command as the kernel stores it (32 bytes, no padding). */
 typedef struct {
     uint16_t id;      /**< MAV_CMD number */
     uint8_t frame;    /**< MAV_FRAME number */

@@ -7,6 +7,7 @@
 #define MT_MT_H
 
 #include "mt/config.h"
+#include "mt/mission.h"
 #include "mt/objring.h"
 #include "mt/proc.h"
 #include "mt/ring.h"
