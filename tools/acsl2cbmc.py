@@ -253,6 +253,9 @@ class Program:
         self.ghosts = []          # list of (name, CType)
         self.lemmas = []          # list of (name, expr, where)
         self.skipped = []         # logic declarations over two memory states (WP only)
+        self.cvars = {}           # kernel global variables (extern mt_*) -> CType
+        self.logic2 = []          # two-state predicates, expanded at each use
+        self.keep_file = lambda path: False   # files whose declarations we translate
         self.functions = {}       # name -> FuncContract
         self.func_order = []
 
@@ -560,7 +563,10 @@ class DeclParser:
                 self.take(";")
             on_decl("func", fd, first)
             return
-        # variable declaration(s)
+        # variable declaration(s): the globals of the translated files may appear in
+        # contracts (a static one only in the contracts of its own file's static helpers)
+        if self.prog.keep_file(first.file):
+            self.prog.cvars[name] = t
         depth = 0
         while True:
             tt = self.take()
@@ -798,7 +804,8 @@ class AParser:
             self.take()
             return ("deref", self.unary())
         if t.text == "&":
-            fail(self.where, "unsupported ACSL construct: address-of (&)")
+            self.take()
+            return ("addr", self.unary())
         if self.is_cast():
             self.take("(")
             words = []
@@ -822,17 +829,26 @@ class AParser:
             elif self.at("->"):
                 self.take()
                 e = ("arrow", e, self.take().text)
-            elif self.at("("):
+            elif self.at("(") or (self.at("{") and e[0] == "id"):
                 if e[0] != "id":
                     fail(self.where, "unsupported call of a non-name")
-                self.take()
+                labels = []
+                if self.at("{"):
+                    # memory-state labels of a logic application: P{Pre, Post}(...)
+                    self.take("{")
+                    while not self.at("}"):
+                        t = self.take()
+                        if t.text != ",":
+                            labels.append(t.text)
+                    self.take("}")
+                self.take("(")
                 args = []
                 while not self.at(")"):
                     args.append(self.range_or_expr())
                     if self.at(","):
                         self.take()
                 self.take(")")
-                e = ("call", e[1], args)
+                e = ("call", e[1], args, tuple(labels)) if labels else ("call", e[1], args)
             else:
                 return e
 
@@ -867,6 +883,13 @@ class AParser:
                 e = self.range_or_expr()
                 self.take(")")
                 return ("old", e)
+            if w == "\\at":
+                self.take("(")
+                e = self.range_or_expr()
+                self.take(",")
+                lab = self.take().text
+                self.take(")")
+                return ("at", e, lab)
             if w in ("\\valid", "\\valid_read"):
                 self.take("(")
                 e = self.range_or_expr()
@@ -960,9 +983,10 @@ class FuncContract:
 
 
 class LogicDef:
-    def __init__(self, kind, name, ret, params, body, where):
+    def __init__(self, kind, name, ret, params, body, where, labels=()):
         self.kind, self.name, self.ret, self.params, self.body, self.where = \
             kind, name, ret, params, body, where
+        self.labels = tuple(labels)   # two-state definitions: expanded at each use
 
 
 def parse_contract(fc, where, is_type):
@@ -1038,15 +1062,33 @@ TWO_STATE = re.compile(r"\b[A-Za-z_]\w*\{\s*\w+\s*,\s*\w+\s*\}\s*\(")
 
 
 def take_labels(p):
-    """Consume an optional label list `{L1, L2}` after a logic name; returns its length."""
-    n = 0
+    """Consume an optional label list `{L1, L2}` after a logic name; returns the names."""
+    names = []
     if p.at("{"):
         p.take("{")
         while not p.at("}"):
-            if p.take().text != ",":
-                n += 1
+            t = p.take().text
+            if t != ",":
+                names.append(t)
         p.take("}")
-    return n
+    return names
+
+
+def parse_params(p):
+    params = []
+    if p.at("("):
+        p.take("(")
+        while not p.at(")"):
+            words = []
+            while not (p.at(",") or p.at(")")):
+                words.append(p.take().text)
+            pname = words[-1]
+            ptype = " ".join(words[:-1]).replace(" *", "*").replace("*", " *")
+            params.append((pname, ptype.strip()))
+            if p.at(","):
+                p.take()
+        p.take(")")
+    return params
 
 
 def skip_definition(p):
@@ -1089,25 +1131,31 @@ def parse_logic_block(prog, text, where, is_type):
                     words.append(p.take().text)
                 ret = " ".join(words)
             name = p.take().text
-            if take_labels(p) > 1:
-                # relates two memory states (a frame fact for WP): no single-state C twin.
-                # A contract that uses it fails translation as an unknown predicate.
-                skip_definition(p)
-                prog.skipped.append(f"{where}: {kw} {name} (two memory states, WP only)")
+            labels = take_labels(p)
+            if len(labels) > 1:
+                # relates two memory states: no single-state C twin. A predicate with a
+                # plain definition is kept as a macro, expanded at each application
+                # P{Pre, Post}(...) in an ensures clause (its \\at(e, L) become \\old(e) or
+                # e); anything else (reads, axiomatic) is WP's only, and a contract that
+                # uses it fails translation as an unknown predicate.
+                start = p.i
+                try:
+                    params = parse_params(p)
+                    if kw != "predicate" or not p.at("="):
+                        raise TranslateError("not a plain predicate definition")
+                    p.take("=")
+                    body = p.expr()
+                    p.take(";")
+                except TranslateError:
+                    p.i = start
+                    skip_definition(p)
+                    prog.skipped.append(f"{where}: {kw} {name} (two memory states, WP only)")
+                    continue
+                ld = LogicDef(kw, name, ret, params, body, f"{where}: {kw} {name}", labels)
+                prog.logic_by_name[name] = ld
+                prog.logic2.append(ld)
                 continue
-            params = []
-            if p.at("("):
-                p.take("(")
-                while not p.at(")"):
-                    words = []
-                    while not (p.at(",") or p.at(")")):
-                        words.append(p.take().text)
-                    pname = words[-1]
-                    ptype = " ".join(words[:-1]).replace(" *", "*").replace("*", " *")
-                    params.append((pname, ptype.strip()))
-                    if p.at(","):
-                        p.take()
-                p.take(")")
+            params = parse_params(p)
             if p.at("reads"):
                 fail(where, f"unsupported: reads clause on {name}")
             if not p.at("="):
@@ -1120,7 +1168,7 @@ def parse_logic_block(prog, text, where, is_type):
             prog.logic_by_name[name] = ld
         elif kw == "lemma":
             name = p.take().text
-            if take_labels(p) > 1:
+            if len(take_labels(p)) > 1:
                 skip_definition(p)
                 prog.skipped.append(f"{where}: lemma {name} (two memory states, WP only)")
                 continue
@@ -1304,6 +1352,8 @@ class Translator:
             if lt.kind != "ptr":
                 fail(w, f"* of a non-pointer ({self.show(e[1])})")
             return f"(*({p}))", self.target(lt.ctype, w)
+        if tag == "id" and e[1] in self.prog.cvars and e[1] not in ctx.env:
+            return e[1], self.prog.cvars[e[1]]
         return None
 
     def target(self, ptype, w):
@@ -1354,6 +1404,13 @@ class Translator:
                 if params is not None:
                     fail(w, f"function-like macro {name} used as a term")
                 return f"(({INT128})({name}))", LT("int")
+            if name in self.prog.cvars:
+                # a C global variable: an array is its first element's address (the same in
+                # every state), a scalar is read in the context's state
+                t = self.prog.cvars[name]
+                if t.kind == "array":
+                    return f"(&({name})[0])", LT("ptr", CType("ptr", to=t.to))
+                return self.widen(self.mem(name, ctx), t)
             fail(w, f"unknown identifier {name!r}")
         if tag == "old":
             if not ctx.allow_old:
@@ -1373,7 +1430,20 @@ class Translator:
             name = e[1]
             if name not in self.prog.logic_by_name:
                 fail(w, f"unknown logic function or predicate {name!r}")
-            return self.call(self.prog.logic_by_name[name], e[2], ctx)
+            ld = self.prog.logic_by_name[name]
+            if ld.labels or len(e) > 3:
+                return self.pred(self.expand(ld, e, ctx), ctx), LT("bool")
+            return self.call(ld, e[2], ctx)
+        if tag == "at":
+            fail(w, f"unsupported ACSL construct: \\at ({self.show(e)}; only inside a "
+                 "two-state predicate applied with {Pre, Post} in an ensures clause)")
+        if tag == "here":
+            return self.term(e[1], ctx.with_state(0))
+        if tag == "addr":
+            lv = self.lval(e[1], ctx)
+            if lv is None:
+                fail(w, f"address of a non-lvalue ({self.show(e)})")
+            return f"(&({lv[0]}))", LT("ptr", CType("ptr", to=lv[1]))
         if tag == "neg":
             c, lt = self.term(e[1], ctx)
             self.want(lt, "int", e, w)
@@ -1458,6 +1528,67 @@ class Translator:
             return fn, LT("bool")
         return fn, LT("int")
 
+    STATE_LABELS = {"Pre": "old", "Old": "old", "Post": "here", "Here": "here"}
+
+    def expand(self, ld, e, ctx):
+        """A two-state predicate applied as P{A, B}(args) in an ensures clause: its body with
+        the parameters replaced by the arguments and each \\at(x, Li) by \\old(x) (Li bound to
+        Pre/Old) or x in the post-state (Li bound to Post/Here)."""
+        w = ctx.where
+        labels = e[3] if len(e) > 3 else ()
+        if len(labels) != len(ld.labels):
+            fail(w, f"{ld.name} takes {len(ld.labels)} memory-state labels, got {len(labels)}")
+        if len(e[2]) != len(ld.params):
+            fail(w, f"{ld.name} takes {len(ld.params)} arguments, got {len(e[2])}")
+        lmap = {}
+        for formal, actual in zip(ld.labels, labels):
+            if actual not in self.STATE_LABELS:
+                fail(w, f"unsupported state label {actual} in {ld.name}{{...}} (only Pre, Old, "
+                     "Post, Here)")
+            lmap[formal] = actual
+        if not ctx.allow_old and any(self.STATE_LABELS[a] == "old" for a in lmap.values()):
+            fail(w, f"{ld.name}{{{', '.join(labels)}}} outside an ensures clause")
+        pmap = dict(zip((n for n, _ in ld.params), e[2]))
+        free = set()
+
+        def ids(x):
+            if isinstance(x, tuple):
+                if x and x[0] == "id":
+                    free.add(x[1])
+                for y in x:
+                    ids(y)
+            elif isinstance(x, list):
+                for y in x:
+                    ids(y)
+        ids(list(e[2]))
+
+        def sub(x, bound):
+            if isinstance(x, list):
+                return [sub(y, bound) for y in x]
+            if not isinstance(x, tuple) or not x:
+                return x
+            tag = x[0]
+            if tag == "id":
+                return pmap[x[1]] if x[1] in pmap and x[1] not in bound else x
+            if tag in ("forall", "exists"):
+                v = x[1][1]
+                if v in free:
+                    fail(w, f"expanding {ld.name}: bound variable {v} would capture an argument")
+                return (tag, x[1], sub(x[2], bound | {v}))
+            if tag == "at":
+                if x[2] not in lmap:
+                    fail(w, f"expanding {ld.name}: unknown label {x[2]}")
+                return (self.STATE_LABELS[lmap[x[2]]], sub(x[1], bound))
+            if tag == "call" and len(x) > 3:
+                for lab in x[3]:
+                    if lab not in lmap:
+                        fail(w, f"expanding {ld.name}: unknown label {lab}")
+                return ("call", x[1], sub(x[2], bound), tuple(lmap[lab] for lab in x[3]))
+            return tuple(sub(y, bound) if isinstance(y, (tuple, list)) else y for y in x)
+        if ld.kind != "predicate":
+            fail(w, f"unsupported: two-state logic function {ld.name}")
+        return sub(ld.body, frozenset())
+
     # -- predicates -------------------------------------------------------------------------
     def pred(self, e, ctx):
         """Translate a predicate to a C int expression (0/1), evaluation mode."""
@@ -1489,6 +1620,8 @@ class Translator:
             if not ctx.allow_old:
                 fail(w, "\\old outside an ensures clause")
             return self.pred(e[1], ctx.with_state(1) if ctx.state == 0 else ctx)
+        if tag == "here":
+            return self.pred(e[1], ctx.with_state(0))
         if tag == "ite":
             return f"({self.pred(e[1], ctx)} ? {self.pred(e[2], ctx)} : {self.pred(e[3], ctx)})"
         c, lt = self.term(e, ctx)
@@ -1704,6 +1837,12 @@ class Translator:
                     self.assert_pred(e[3], ctx, label, indent + 4) + f"{pad}}}\n")
         if tag == "old" and ctx.state == 0:
             return self.assert_pred(e[1], ctx.with_state(1), label, indent)
+        if tag == "here" and ctx.state == 0:
+            return self.assert_pred(e[1], ctx, label, indent)
+        if tag == "call" and e[1] in self.prog.logic_by_name and \
+                (len(e) > 3 or self.prog.logic_by_name[e[1]].labels):
+            return self.assert_pred(self.expand(self.prog.logic_by_name[e[1]], e, ctx), ctx,
+                                    label, indent)
         if tag == "forall":
             vname, lo, hi, rest = self.quant_parts(e, ctx)
             self.uid += 1
@@ -1726,6 +1865,12 @@ class Translator:
         """X == \\old(X) for a struct lvalue X: field-wise, one nondeterministic index per
         array (so every element is covered)."""
         lhs_e, rhs_e = e[1][0], e[1][2]
+        if ctx.state == 0:
+            # X == \\at(X, Post) from a two-state predicate: the post-state is the current one
+            lhs_e = lhs_e[1] if lhs_e[0] == "here" else lhs_e
+            rhs_e = rhs_e[1] if rhs_e[0] == "here" else rhs_e
+        if lhs_e[0] == "old" and rhs_e[0] != "old":
+            lhs_e, rhs_e = rhs_e, lhs_e
         if rhs_e[0] != "old" or lhs_e[0] == "old":
             fail(ctx.where, f"unsupported struct comparison (only X == \\old(X)): {self.show(e)}")
         lhs = self.lval(lhs_e, ctx)
@@ -1837,6 +1982,12 @@ class Translator:
             return "\\" + tag
         if tag == "old":
             return f"\\old({s(e[1])})"
+        if tag == "here":
+            return f"\\at({s(e[1])}, Here)"
+        if tag == "at":
+            return f"\\at({s(e[1])}, {e[2]})"
+        if tag == "addr":
+            return f"&{s(e[1])}"
         if tag == "bin":
             return f"({s(e[2])} {e[1]} {s(e[3])})"
         if tag == "rel":
@@ -1859,7 +2010,8 @@ class Translator:
         if tag == "range":
             return f"{s(e[1])} .. {s(e[2])}"
         if tag == "call":
-            return f"{e[1]}({', '.join(s(a) for a in e[2])})"
+            labs = f"{{{', '.join(e[3])}}}" if len(e) > 3 else ""
+            return f"{e[1]}{labs}({', '.join(s(a) for a in e[2])})"
         if tag == "cast":
             return f"({' '.join(e[1])}){s(e[2])}"
         if tag == "ite":
@@ -1933,6 +2085,7 @@ def load_program(inputs, incdirs, cpp, keep_file):
     text = preprocess(inputs, incdirs, cpp)
     toks = [t for t in c_tokens(text) if t.kind != "comment" or is_annotation(t.text)]
     prog = Program()
+    prog.keep_file = keep_file
     pending = [None]
     global_blocks = []
 
@@ -2284,14 +2437,17 @@ def gen_contract(prog, tr, fc, kinds):
             f"static void mtc_req_{name}({param_list(fc, False)})\n{{\n",
             *[f"    (void){n};\n" for n, _ in fc.decl.params],
             *body_req, "}\n\n", *frame,
-            f"/* ensures, behaviours and assigns; \\old reads the snapshot (mtc_snapshot) */\n"
+            f"/* ensures, behaviours and assigns; \\old reads the snapshot (mtc_snapshot). A\n"
+            f" * coverage build of a proof that sets COVER_DEFINES = -DMTC_COVER_ONLY leaves them out\n"
+            f" * (they only feed assertions, which the coverage run drops: assumption B5). */\n"
             f"static void mtc_post_{name}({param_list(fc, True)})\n{{\n",
-            *post, "}\n\n#endif\n"]
+            "#if !defined(MTC_COVER_ONLY)\n", *post, "#else\n",
+            *[f"    (void){n};\n" for n in fargs], "#endif\n", "}\n\n#endif\n"]
     return "".join(text), stats, labels
 
 
 MTC_MAX_OBJS = 6
-STUB_PREFIXES = ("mt_port_", "mt_invoke")
+STUB_PREFIXES = ("mt_port_", "mt_invoke", "mt_mission_invoke")
 STUB_SKIP = ("mt_port_halt",)   # hand-written: reaching it is an error (assert(0))
 
 
@@ -2461,6 +2617,8 @@ def main(argv=None):
                   f"{'  [static helper]' if r['static'] else ''}"
                   f"{'  [stub]' if fname in stubbed else ''}")
         print(f"acsl2cbmc: {tot} clauses translated, none dropped")
+        for ld in prog.logic2:
+            print(f"  two-state predicate, expanded at each use: {ld.where}")
         for sk in prog.skipped:
             print(f"  not translated (WP only): {sk}")
     return 0

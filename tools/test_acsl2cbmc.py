@@ -12,6 +12,9 @@
    ok: `\\result == MT_OK` -> `\\result == MT_E_FULL`) is rejected by CBMC (assertion
    "mt_bring_commit: ensures ok.status") and by Frama-C/WP (goal
    mt_bring_commit_ok_ensures_status not proved), while the unmutated copy passes both.
+5. A two-state predicate P{L1, L2} applied as P{Pre, Post}(x) in an ensures clause, and C
+   globals in contracts, on a second sample: proved, and a changed scalar or struct field is
+   caught under the clause's label.
    Skipped (with a message) when frama-c is not installed; SKIP_WP=1 skips the WP half.
 
 Everything runs on copies under build/proof/cbmc/test/; kernel/ is never modified.
@@ -278,6 +281,100 @@ class Unsupported(unittest.TestCase):
                 self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
                 self.assertRegex(r.stderr, want)
                 self.assertIn("acsl2cbmc: error:", r.stderr)
+
+
+TWO_STATE_H = r"""
+#include <stdint.h>
+
+typedef struct {
+    int32_t a;
+    int32_t b[2];
+} mt_pair_t;
+
+typedef struct {
+    uint32_t n;
+    uint32_t hits;
+    mt_pair_t p[3];
+} mt_box_t;
+
+extern uint8_t mt_scratch[4];
+
+/*@ predicate Kept{L1, L2}(mt_box_t *x) =
+        \at(x->hits, L1) == \at(x->hits, L2) &&
+        \forall integer i; 0 <= i < 3 ==> \at(x->p[i], L1) == \at(x->p[i], L2);
+
+    predicate Sep(mt_box_t *x, uint8_t *s) = \separated(x, s + (0 .. 3));
+*/
+
+/*@ requires v: \valid(x) && Sep(x, &mt_scratch[0]) && \separated(x, mt_scratch + (0 .. 3));
+    assigns x->n, mt_scratch[0 .. 3];
+    ensures kept: Kept{Pre, Post}(x);
+    ensures counted: x->n == \old(x->n) / 2;
+*/
+void mt_box_f(mt_box_t *x);
+"""
+
+TWO_STATE_C = r"""
+#include "mt_box.h"
+
+uint8_t mt_scratch[4];
+
+void mt_box_f(mt_box_t *x)
+{
+    mt_scratch[x->n % 4u] = 1u;
+    x->n = x->n / 2u;
+}
+"""
+
+TWO_STATE_HARNESS = r"""
+#include "mtc_logic.h"
+#include "mt_box_f_contract.h"
+
+void harness(void)
+{
+    mt_box_t *x = (mt_box_t *)mtc_alloc(sizeof(mt_box_t), 1u, MTC_K_mt_box_t);
+    __CPROVER_assume(mtc_pre_mt_box_f(x));
+    mtc_snapshot();
+    mt_box_f(x);
+    mtc_post_mt_box_f(x);
+}
+"""
+
+
+class TwoState(unittest.TestCase):
+    """A predicate over two memory states applied as P{Pre, Post}(...) in an ensures clause
+    (expanded: \\at(e, Pre) reads the snapshot, \\at(e, Post) the current state, struct
+    equality field by field), and C globals in contracts (`&g[0]`, `g + (a .. b)`)."""
+
+    def run_box(self, impl=TWO_STATE_C):
+        d = os.path.join(WORK, "two-state", self.id().split(".")[-1])
+        shutil.rmtree(d, ignore_errors=True)
+        write(os.path.join(d, "src", "mt_box.h"), TWO_STATE_H)
+        write(os.path.join(d, "src", "mt_box.c"), impl)
+        write(os.path.join(d, "harness.c"), TWO_STATE_HARNESS)
+        t = translate([os.path.join(d, "src", "mt_box.h")], [os.path.join(d, "src")],
+                      os.path.join(d, "gen"))
+        self.assertEqual(t.returncode, 0, t.stderr)
+        self.assertIn("two-state predicate, expanded at each use", t.stdout)
+        srcs = [os.path.join(d, "harness.c"), os.path.join(d, "src", "mt_box.c"),
+                os.path.join(LIB, "mtc.c"), os.path.join(LIB, "ghost.c")]
+        return cbmc_failures(srcs, [os.path.join(d, "src"), os.path.join(d, "gen"), LIB], d)
+
+    def test_passes(self):
+        failed, total = self.run_box()
+        self.assertEqual(failed, [])
+        self.assertGreater(total, 10)
+
+    def test_scalar_change_caught(self):
+        failed, _ = self.run_box(TWO_STATE_C.replace("x->n = x->n / 2u;",
+                                                     "x->n = x->n / 2u;\n    x->hits++;"))
+        self.assertIn("mt_box_f: ensures kept", failed)
+
+    def test_struct_change_caught(self):
+        failed, _ = self.run_box(TWO_STATE_C.replace("x->n = x->n / 2u;",
+                                                     "x->n = x->n / 2u;\n    x->p[2].b[1]++;"))
+        self.assertIn("mt_box_f: ensures kept", failed)
+        self.assertNotIn("mt_box_f: ensures counted", failed)
 
 
 def copy_kernel(dst):

@@ -83,6 +83,7 @@ void *mtc_old_ptr(const void *p)
         return v;                                                                               \
     }
 MTC_NONDET(uint8_t, mtc_nondet_u8)
+MTC_NONDET(uint16_t, mtc_nondet_u16)
 MTC_NONDET(uint32_t, mtc_nondet_u32)
 MTC_NONDET(uint64_t, mtc_nondet_u64)
 MTC_NONDET(int32_t, mtc_nondet_i32)

@@ -33,6 +33,7 @@ extern int mtc_snapshot_taken;
 
 /* nondeterministic values */
 uint8_t mtc_nondet_u8(void);
+uint16_t mtc_nondet_u16(void);
 uint32_t mtc_nondet_u32(void);
 uint64_t mtc_nondet_u64(void);
 int32_t mtc_nondet_i32(void);

@@ -114,3 +114,13 @@ uint32_t mtc_pick_u32(const uint32_t *vals, uint32_t n)
     __CPROVER_assume(k < n);
     return vals[k];
 }
+
+mt_mission_t *mtc_mission(void)
+{
+    return MTC_NEW(mt_mission_t, 1u);
+}
+
+mt_mission_cmd_t *mtc_mission_cmds(uint32_t n)
+{
+    return MTC_NEW(mt_mission_cmd_t, n);
+}

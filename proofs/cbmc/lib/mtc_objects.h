@@ -83,4 +83,13 @@ uint32_t mtc_pick_u32(const uint32_t *vals, uint32_t n);
 /* A nondeterministic non-NULL callback (never called: assumption A1, see ASSUMPTIONS.md). */
 void *mtc_callback(void);
 
+/* A mission object with every field nondeterministic (the function's requires, MtMissionInv,
+ * selects the legal states: any commands, kinds, jump targets, repeat counts, counters and
+ * cursors the invariant allows), built with MT_CFG_MISSION_MAX_CMDS = 4 (Makefile.common,
+ * assumption B1). */
+mt_mission_t *mtc_mission(void);
+
+/* A candidate command list of n commands, every field nondeterministic. */
+mt_mission_cmd_t *mtc_mission_cmds(uint32_t n);
+
 #endif /* MTC_OBJECTS_H */
