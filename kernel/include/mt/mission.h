@@ -336,8 +336,10 @@ mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds
 */
 mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad);
 
-/** Start from the first command: counters reset, RUNNING, first nav command
- *  loaded (or, with no nav command at all, complete at once).
+/** Start from the first command: counters reset, RUNNING, and one start
+ *  attempt on the first nav command (if its start callback refuses, it counts
+ *  as completed and the next update loads the following one; with no nav
+ *  command at all the mission completes at once).
  *  @retval MT_OK
  *  @retval MT_E_EMPTY no command besides home (nothing changes) */
 /*@ requires inv: MtMissionInv(m);
