@@ -36,6 +36,7 @@
 #include <string.h>
 
 #include "mt/mission.h"
+#include "trace_rng.h"
 
 #define MAX_CMDS 24u
 #define MAX_CBS 8u
@@ -55,11 +56,7 @@ static int g_first = 1;
 
 static uint32_t rnd(uint32_t n)
 {
-    /* xorshift64*, deterministic per seed */
-    g_rng ^= g_rng >> 12;
-    g_rng ^= g_rng << 25;
-    g_rng ^= g_rng >> 27;
-    return (uint32_t)(((g_rng * 2685821657736338717ull) >> 33) % n);
+    return trace_rnd(&g_rng, n);
 }
 
 static void record(const char *k, uint16_t i, int r)

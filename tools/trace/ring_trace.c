@@ -34,6 +34,7 @@
 
 #include "mt/objring.h"
 #include "mt/ring.h"
+#include "trace_rng.h"
 
 #define MAX_CAP 64u
 #define STACK_BYTES (256u * 1024u)
@@ -59,11 +60,7 @@ static int g_first = 1;
 
 static uint32_t rnd(uint32_t n)
 {
-    /* xorshift64*, deterministic per seed */
-    g_rng ^= g_rng >> 12;
-    g_rng ^= g_rng << 25;
-    g_rng ^= g_rng >> 27;
-    return (uint32_t)(((g_rng * 2685821657736338717ull) >> 33) % n);
+    return trace_rnd(&g_rng, n);
 }
 
 static void sep(void)

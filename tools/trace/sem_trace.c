@@ -35,6 +35,7 @@
 
 #include "mt/sem.h"
 #include "mt_port.h"
+#include "trace_rng.h"
 
 #define LOG_MAX 20000
 
@@ -68,10 +69,7 @@ bool __wrap_mt_port_resume_i(mt_port_tref_t *ref);
 
 static uint32_t rnd(uint32_t n)
 {
-    tl_rng ^= tl_rng >> 12;
-    tl_rng ^= tl_rng << 25;
-    tl_rng ^= tl_rng >> 27;
-    return (uint32_t)(((tl_rng * 2685821657736338717ull) >> 33) % n);
+    return trace_rnd(&tl_rng, n);
 }
 
 static void logf_(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
