@@ -21,6 +21,7 @@
 #include <stdint.h>
 
 #include "mt/proc.h"
+#include "mt/wq.h"
 #include "mt_port.h"
 
 #ifdef __cplusplus
@@ -60,6 +61,23 @@ mt_status_t mt_posix_proc_thread_start(mt_posix_proc_thread_t *t, mt_proc_set_t 
                                        uint32_t period_us, mt_prio_base_t prio);
 /** Stop and join it. */
 void mt_posix_proc_thread_stop(mt_posix_proc_thread_t *t);
+
+/** The thread that serves a work queue (mt_wq_thread_body at the queue's
+ *  prio_base + prio_offset). Real-time mode only: in simulated time, run the
+ *  queue from the test with mt_wq_run_pending(). */
+typedef struct {
+    mt_wq_t *wq;
+    void *impl;             /**< pthread handle storage */
+} mt_posix_wq_thread_t;
+
+/** Start the queue's thread.
+ *  @retval MT_OK
+ *  @retval MT_E_INVALID NULL queue, a priority base out of range, or simulated time.
+ *  @retval MT_E_FULL no thread could be created. */
+mt_status_t mt_posix_wq_start(mt_posix_wq_thread_t *t, mt_wq_t *q);
+/** Ask the queue's thread to stop (mt_wq_request_stop) and join it; it
+ *  finishes the run in progress, queued items stay queued. */
+void mt_posix_wq_stop(mt_posix_wq_thread_t *t);
 
 /** Join every thread made by mt_port_thread_create (for tests and demos). */
 void mt_posix_join_all(void);

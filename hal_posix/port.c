@@ -405,3 +405,53 @@ void mt_posix_proc_thread_stop(mt_posix_proc_thread_t *t)
     free(impl);
     t->impl = NULL;
 }
+
+/* ---- work-queue threads ------------------------------------------------------------ */
+
+typedef struct {
+    pthread_t th;
+} wq_impl_t;
+
+static void *wq_tramp(void *p)
+{
+    mt_wq_thread_body(p);
+    return NULL;
+}
+
+mt_status_t mt_posix_wq_start(mt_posix_wq_thread_t *t, mt_wq_t *q)
+{
+    wq_impl_t *impl;
+    if ((t == NULL) || (q == NULL) || ((unsigned)q->prio_base >= (unsigned)MT_PRIO_BASE_COUNT) ||
+        mt_posix_sim_active()) {
+        return MT_E_INVALID;
+    }
+    impl = (wq_impl_t *)calloc(1, sizeof(*impl));
+    if (impl == NULL) {
+        return MT_E_FULL;
+    }
+    t->wq = q;
+    t->impl = impl;
+    if (spawn(&impl->th, wq_tramp, q, q->prio_base, q->prio_offset) != 0) {
+        free(impl);
+        t->impl = NULL;
+        return MT_E_FULL;
+    }
+    if (q->name != NULL) {
+        char nm[16];
+        snprintf(nm, sizeof(nm), "%s", q->name);
+        (void)pthread_setname_np(impl->th, nm);
+    }
+    return MT_OK;
+}
+
+void mt_posix_wq_stop(mt_posix_wq_thread_t *t)
+{
+    wq_impl_t *impl = (wq_impl_t *)t->impl;
+    if (impl == NULL) {
+        return;
+    }
+    mt_wq_request_stop(t->wq);
+    pthread_join(impl->th, NULL);
+    free(impl);
+    t->impl = NULL;
+}

@@ -4,7 +4,7 @@
 #   make prove          tools/bootstrap.sh prove, then every proof part (for now: wp)
 #   make wp             Frama-C/WP on every kernel module + the data-type laws, 2 modules at a
 #                       time, then proofs/wp/gate.py (fails unless 100 % goals + smoke tests)
-#   make wp-<module>    one module (status time sem proc ring objring sched mission laws), no gate
+#   make wp-<module>    one module (status time sem proc ring objring sched mission wq laws), no gate
 #   make wp-gate        the gate alone, on the last reports
 #   make wp-diversity   Z3 alone and CVC4 alone, regenerates proofs/wp/diversity.md
 #   make wp-clean       drop the WP sessions and caches
@@ -19,7 +19,7 @@ WP_DIR       ?= $(WP_ROOT)/wp
 WP_WHY3CONF  := $(WP_ROOT)/why3.conf
 # Longest first (make -j starts them in this order, so the slowest module does not start
 # last and leave one core idle at the end); modules not named here follow, alphabetically.
-WP_ORDER     := mission sched ring objring proc laws sem time status
+WP_ORDER     := mission sched wq ring objring proc laws sem time status
 WP_ALL_MODS  := $(filter-out invoke mission_invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws
 WP_MODULES   := $(filter $(WP_ALL_MODS),$(WP_ORDER)) $(filter-out $(WP_ORDER),$(WP_ALL_MODS))
 # Per proof goal; smoke tests have their own limit (-wp-smoke-timeout, 2 s by default). The
@@ -39,6 +39,11 @@ wp_src        = $(or $(WP_SRC_$(1)),kernel/src/$(1).c)
 # pointer value). Sound there because the module never accesses those bytes as another type;
 # gate.py accepts exactly that cast warning, in that module only.
 WP_MODEL_objring := Typed+cast
+# The work queue's void * entry points (mt_work_notify_i, mt_wq_timer_proc, mt_wq_thread_body:
+# the callback shapes of the bus, the proc sets and the port threads) convert their argument
+# back to the mt_work_t / mt_wq_t it is; +cast keeps the pointer value. Sound because those
+# objects are only ever accessed with their own type; gate.py accepts exactly these casts.
+WP_MODEL_wq := Typed+cast
 wp_model      = $(or $(WP_MODEL_$(1)),Typed)
 
 WP_FLAGS = -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast \

@@ -23,12 +23,28 @@ static_assert(MT_E_TASK_COUNT == 11 && MT_E_LOOP_RATE == 12 && MT_E_TASK_FN == 1
 static_assert(MT_W_DROPPED_OLDEST == 14 && MT_E_MISSION_CMD == 15 && MT_E_MISSION_PARAM == 16, "");
 static_assert(MT_E_MISSION_LOCATION == 17 && MT_E_MISSION_FRAME == 18 && MT_E_MISSION_JUMP == 19, "");
 static_assert(MT_E_MISSION_LOOP == 20 && MT_E_MISSION_SIZE == 21 && MT_E_MISSION_SYNTAX == 22, "");
-static_assert(MT_E_STATE == 23 && MT_STATUS_COUNT == 24, "");
+static_assert(MT_E_STATE == 23 && MT_W_WQ_MERGED == 24 && MT_STATUS_COUNT == 25, "");
 
 // configuration defaults
 static_assert(MT_CFG_VERSION == 1, "");
 static_assert(MT_CFG_SCHED_MAX_TASKS == 64u && MT_CFG_PROC_MAX == 8u, "");
 static_assert(MT_CFG_MISSION_MAX_CMDS == 700u, "");
+static_assert(MT_CFG_WQ_MAX_ITEMS == 16u, "");
+
+// work queues: C layout, slot indices fit the FIFO's byte arrays, distinct state values
+static_assert(std::is_standard_layout<mt_wq_t>::value, "C layout");
+static_assert(std::is_standard_layout<mt_work_t>::value, "C layout");
+static_assert(sizeof(mt_wq_t::order[0]) == 1u && sizeof(mt_wq_t::order) == MT_CFG_WQ_MAX_ITEMS, "");
+static_assert(sizeof(mt_wq_stats_t::runs) == 8u && sizeof(mt_wq_stats_t::merged) == 4u, "");
+static_assert(MT_WQ_TIMER_OFF == 0u && MT_WQ_TIMER_ONCE == 1u && MT_WQ_TIMER_EVERY == 2u, "");
+static_assert(MT_WQ_SHOT_NONE == 0u && MT_WQ_SHOT_ARMED == 1u && MT_WQ_SHOT_RUN == 2u &&
+                  MT_WQ_SHOT_DONE == 3u,
+              "");
+static_assert(MT_WQ_NONE == 0xFFFFFFFFu, "");
+static_assert(std::is_same<decltype(&mt_work_notify_i), void (*)(void *)>::value,
+              "a publish callback shape");
+static_assert(std::is_same<decltype(&mt_wq_timer_proc), mt_proc_fn_t>::value, "a proc");
+static_assert(std::is_same<decltype(&mt_wq_thread_body), mt_thread_fn_t>::value, "a thread body");
 
 // mission commands: 32 bytes, no padding
 static_assert(sizeof(mt_mission_cmd_t) == 32u, "");
@@ -93,6 +109,9 @@ TEST(CxxHeaders, CLinkageCallsWork)
     mt_proc_set_t p;
     mt_proc_set_init(&p);
     EXPECT_EQ(p.count, 0u);
+    static mt_wq_t q;
+    mt_wq_init(&q, "cxx", MT_PRIO_IO, 0);
+    EXPECT_EQ(q.nitems, 0u);
 }
 
 }  // namespace

@@ -665,7 +665,8 @@ TEST(MissionStatus, NamesOfMissionStatuses)
     EXPECT_STREQ(mt_status_str(MT_E_MISSION_SIZE), "MT_E_MISSION_SIZE");
     EXPECT_STREQ(mt_status_str(MT_E_MISSION_SYNTAX), "MT_E_MISSION_SYNTAX");
     EXPECT_STREQ(mt_status_str(MT_E_STATE), "MT_E_STATE");
-    EXPECT_EQ(static_cast<int>(MT_STATUS_COUNT), 24);
+    // statuses appended after the mission ones (work queue, ...) keep these values
+    EXPECT_GT(static_cast<int>(MT_STATUS_COUNT), static_cast<int>(MT_E_STATE));
 }
 
 } // namespace

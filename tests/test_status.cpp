@@ -40,6 +40,7 @@ const Named kAll[] = {
     {MT_E_MISSION_SIZE, "MT_E_MISSION_SIZE"},
     {MT_E_MISSION_SYNTAX, "MT_E_MISSION_SYNTAX"},
     {MT_E_STATE, "MT_E_STATE"},
+    {MT_W_WQ_MERGED, "MT_W_WQ_MERGED"},
 };
 
 TEST(Status, ValuesDistinctAndBelowCount)

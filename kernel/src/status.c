@@ -34,6 +34,7 @@ const char *mt_status_str(mt_status_t st)
     case MT_E_MISSION_SIZE: name = "MT_E_MISSION_SIZE"; break;
     case MT_E_MISSION_SYNTAX: name = "MT_E_MISSION_SYNTAX"; break;
     case MT_E_STATE: name = "MT_E_STATE"; break;
+    case MT_W_WQ_MERGED: name = "MT_W_WQ_MERGED"; break;
     case MT_STATUS_COUNT:
     default: name = "MT_STATUS_?"; break;
     }

@@ -41,6 +41,12 @@
 #define MT_CFG_MISSION_MAX_CMDS 700u
 #endif
 
+/** Items one work queue holds (mt/wq.h): the FIFO, the timers and the
+ *  statistics are one slot record per item (about 140 bytes each). */
+#if !defined(MT_CFG_WQ_MAX_ITEMS)
+#define MT_CFG_WQ_MAX_ITEMS 16u
+#endif
+
 #if (MT_CFG_SCHED_MAX_TASKS < 1u) || (MT_CFG_SCHED_MAX_TASKS > 255u)
 #error "MT_CFG_SCHED_MAX_TASKS must be in [1, 255]"
 #endif
@@ -54,6 +60,10 @@
 
 #if (MT_CFG_MISSION_MAX_CMDS < 2u) || (MT_CFG_MISSION_MAX_CMDS > 32766u)
 #error "MT_CFG_MISSION_MAX_CMDS must be in [2, 32766]"
+#endif
+
+#if (MT_CFG_WQ_MAX_ITEMS < 1u) || (MT_CFG_WQ_MAX_ITEMS > 64u)
+#error "MT_CFG_WQ_MAX_ITEMS must be in [1, 64]"
 #endif
 
 #endif /* MT_CONFIG_H */

@@ -15,6 +15,7 @@
 #include "mt/sem.h"
 #include "mt/status.h"
 #include "mt/time.h"
+#include "mt/wq.h"
 #include "mt_port.h"
 
 #endif /* MT_MT_H */

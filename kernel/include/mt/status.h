@@ -51,7 +51,10 @@ typedef enum {
     MT_E_MISSION_SYNTAX = 22, /**< Mission file: malformed line or field (file layer). */
     MT_E_STATE = 23,         /**< The operation is not allowed in the object's current state
                                   (mission running, stopped, complete). */
-    MT_STATUS_COUNT = 24     /**< Number of statuses (sentinel, not a status). */
+    MT_W_WQ_MERGED = 24,     /**< Work queue: the item was already queued; this activation
+                                  merged into its pending run (counted in the item's and the
+                                  queue's `merged`). */
+    MT_STATUS_COUNT = 25     /**< Number of statuses (sentinel, not a status). */
 } mt_status_t;
 
 /** Short stable name of a status ("MT_E_FULL"); "MT_STATUS_?" for an unknown value. */

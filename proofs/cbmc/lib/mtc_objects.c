@@ -124,3 +124,33 @@ mt_mission_cmd_t *mtc_mission_cmds(uint32_t n)
 {
     return MTC_NEW(mt_mission_cmd_t, n);
 }
+
+static mt_port_tref_t mtc_waiter(void)
+{
+    return mtc_nondet_bool() ? (mt_port_tref_t)0 : (mt_port_tref_t)&mtc_thread;
+}
+
+mt_wq_t *mtc_wq(void)
+{
+    mt_wq_t *q = MTC_NEW(mt_wq_t, 1u);
+    uint32_t i;
+
+    q->wake.waiter = mtc_waiter();
+    for (i = 0u; i < MT_CFG_WQ_MAX_ITEMS; i++) {
+        q->slot[i].fn = mtc_nondet_bool() ? (mt_work_fn_t)0 : (mt_work_fn_t)mtc_callback();
+        q->slot[i].arg = mtc_nondet_bool() ? (void *)0 : (void *)&mtc_thread;
+        q->slot[i].done.waiter = mtc_waiter();
+    }
+    q->name = (const char *)0;
+    return q;
+}
+
+mt_work_t *mtc_work(mt_wq_t *q)
+{
+    mt_work_t *w = MTC_NEW(mt_work_t, 1u);
+
+    w->wq = q;
+    w->fn = (mt_work_fn_t)mtc_callback();
+    w->arg = (void *)0;
+    return w;
+}

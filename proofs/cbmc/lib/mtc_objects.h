@@ -83,6 +83,15 @@ uint32_t mtc_pick_u32(const uint32_t *vals, uint32_t n);
 /* A nondeterministic non-NULL callback (never called: assumption A1, see ASSUMPTIONS.md). */
 void *mtc_callback(void);
 
+/* A work queue (MT_CFG_WQ_MAX_ITEMS = 4, Makefile.common, assumption B1) with every field
+ * nondeterministic except the pointers: each slot's function is NULL or a callback stand-in,
+ * each semaphore's waiter NULL or a parked thread (the requires, MtWqInv, then selects the
+ * legal states: any permutation, head, count, counters, times, timers, single-shot states). */
+mt_wq_t *mtc_wq(void);
+
+/* A work item handle attached to q at a nondeterministic slot (the requires bounds it). */
+mt_work_t *mtc_work(mt_wq_t *q);
+
 /* A mission object with every field nondeterministic (the function's requires, MtMissionInv,
  * selects the legal states: any commands, kinds, jump targets, repeat counts, counters and
  * cursors the invariant allows), built with MT_CFG_MISSION_MAX_CMDS = 4 (Makefile.common,
