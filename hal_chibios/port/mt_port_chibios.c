@@ -32,6 +32,7 @@
 #include "mt/proc.h"
 #include "mt/sem.h"
 #include "mt/time.h"
+#include "mt/wq.h"
 #include "mt_chibios_time.h"
 #include "mt_port.h"
 #include "mt_port_chibios.h"
@@ -485,6 +486,34 @@ mt_status_t mt_chibios_proc_thread_stop(mt_chibios_proc_thread_t *pt, uint64_t t
   pt->stop = 1U;
   chSysUnlock();
   return mt_sem_wait(&pt->done, timeout_us);
+}
+
+/* ---- Work-queue threads. ---------------------------------------------- */
+
+static void wq_thread_fn(void *arg) {
+  mt_chibios_wq_thread_t *wt = (mt_chibios_wq_thread_t *)arg;
+
+  mt_wq_thread_body(wt->wq);
+  /* Signal and exit in one critical section, as the proc threads do. */
+  chSysLock();
+  mt_sem_signal_i(&wt->done);
+  chThdExitS(MSG_OK);
+}
+
+mt_status_t mt_chibios_wq_start(mt_chibios_wq_thread_t *wt, mt_wq_t *q, void *stack,
+                                uint32_t stack_bytes) {
+  if ((wt == NULL) || (q == NULL)) {
+    return MT_E_INVALID;
+  }
+  wt->wq = q;
+  mt_sem_init(&wt->done, false);
+  return mt_port_thread_create(q->name, wq_thread_fn, wt, stack, stack_bytes, q->prio_base,
+                               q->prio_offset);
+}
+
+mt_status_t mt_chibios_wq_stop(mt_chibios_wq_thread_t *wt, uint64_t timeout_us) {
+  mt_wq_request_stop(wt->wq);
+  return mt_sem_wait(&wt->done, timeout_us);
 }
 
 /* ---- ISR timers. ------------------------------------------------------- */

@@ -28,6 +28,7 @@
 #include "mt/proc.h"
 #include "mt/sem.h"
 #include "mt/status.h"
+#include "mt/wq.h"
 #include "mt_port.h"
 
 #ifdef __cplusplus
@@ -90,6 +91,24 @@ mt_status_t mt_chibios_proc_thread_start(mt_chibios_proc_thread_t *pt, const cha
  *  timeout_us for it to exit. [task context]
  *  @retval MT_OK stopped. @retval MT_E_TIMEOUT still running. */
 mt_status_t mt_chibios_proc_thread_stop(mt_chibios_proc_thread_t *pt, uint64_t timeout_us);
+
+/** The thread that serves a work queue (mt_wq_thread_body). */
+typedef struct {
+    mt_wq_t *wq;   /**< the queue */
+    mt_sem_t done; /**< signalled once the thread has terminated (stack free) */
+} mt_chibios_wq_thread_t;
+
+/** Create the queue's thread on stack at the queue's prio_base + prio_offset,
+ *  named after the queue.
+ *  @retval MT_OK, MT_E_INVALID (as mt_port_thread_create: bad priority base,
+ *          stack too small). */
+mt_status_t mt_chibios_wq_start(mt_chibios_wq_thread_t *wt, mt_wq_t *q, void *stack,
+                                uint32_t stack_bytes);
+
+/** Ask the queue's thread to stop (mt_wq_request_stop; it ends the run in
+ *  progress) and wait up to timeout_us for it to exit. [task context]
+ *  @retval MT_OK stopped. @retval MT_E_TIMEOUT still running. */
+mt_status_t mt_chibios_wq_stop(mt_chibios_wq_thread_t *wt, uint64_t timeout_us);
 
 /** ISR timer function: ISR context, kernel lock not held. */
 typedef void (*mt_chibios_isr_fn_t)(void *arg);

@@ -1006,14 +1006,20 @@ static uint32_t mean_interval_us(const mt_wq_stats_t *st)
                : clamp_u32(sub_sat_u64(st->last_start_us, st->first_start_us) / (st->starts - 1u));
 }
 
-void mt_work_report(const mt_work_t *w, mt_work_report_t *r)
+/* The statistics and timer part of an item's report. */
+/*@ requires valid: \valid_read(e) && \valid(r) && \separated(r, e);
+    assigns r->starts, r->runs, r->mean_run_us, r->max_run_us, r->mean_interval_us,
+            r->min_interval_us, r->max_interval_us, r->rate_mhz, r->max_latency_us, r->merged,
+            r->missed, r->timer, r->period_us;
+    ensures runs: r->runs == e->stats.runs && r->starts == e->stats.starts;
+    ensures counts: r->merged == e->stats.merged && r->missed == e->stats.missed;
+    ensures mean_guarded: e->stats.runs == 0 ==> r->mean_run_us == 0;
+    ensures interval_guarded: e->stats.starts < 2 ==> r->mean_interval_us == 0 && r->rate_mhz == 0;
+*/
+static void fill_work_report(const mt_wq_slot_t *e, mt_work_report_t *r)
 {
-    const mt_wq_t *q = w->wq;
-    const mt_wq_slot_t *e = &q->slot[w->slot];
-    uint32_t iv;
+    uint32_t iv = mean_interval_us(&e->stats);
 
-    mt_port_lock();
-    iv = mean_interval_us(&e->stats);
     r->starts = e->stats.starts;
     r->runs = e->stats.runs;
     r->mean_run_us = mean_run_us(&e->stats);
@@ -1025,10 +1031,18 @@ void mt_work_report(const mt_work_t *w, mt_work_report_t *r)
     r->max_latency_us = e->stats.max_latency_us;
     r->merged = e->stats.merged;
     r->missed = e->stats.missed;
-    r->queued = is_queued(q, w->slot);
-    r->running = (q->running == w->slot) ? 1u : 0u;
     r->timer = e->timer;
     r->period_us = (e->timer == MT_WQ_TIMER_EVERY) ? e->period_us : 0u;
+}
+
+void mt_work_report(const mt_work_t *w, mt_work_report_t *r)
+{
+    const mt_wq_t *q = w->wq;
+
+    mt_port_lock();
+    fill_work_report(&q->slot[w->slot], r);
+    r->queued = is_queued(q, w->slot);
+    r->running = (q->running == w->slot) ? 1u : 0u;
     mt_port_unlock();
 }
 

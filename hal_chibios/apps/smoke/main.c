@@ -23,11 +23,17 @@
  *   mt_sem_signal_isr (ISR lock flavour: the kernel lock is not held there).
  * - sensor thread (SPI, 181) takes isr_sem, hands a token to the ponger
  *   thread (I2C, 176) through ping_sem and waits for it back on pong_sem.
+ * - work queue `wq_smoke` (CAN, 178, its own thread): an interval item every
+ *   WQ_PERIOD_US driven by the timer procs (mt_wq_timer_proc), an item the
+ *   ISR schedules on every tick (mt_work_schedule_isr), and a single-shot
+ *   item main waits for (mt_work_run_wait) before the loop starts.
  *
  * Checks: each task's runs within one of RUN_PERIODS / interval and no
  * slips; no missed loop, timer or IO periods; every object and byte
  * delivered in order, none lost or rejected; every semaphore signal taken
- * (none merged, no timeout). The loop rate, 500 Hz, is two ticks of the
+ * (none merged, no timeout); the interval item ran once per period, none
+ * missed or merged; every ISR activation of the work item is a run or a
+ * counted merge; the single shot returned MT_OK after its run. The loop rate, 500 Hz, is two ticks of the
  * 1 kHz RT tick, so every sample falls on a tick edge, and it divides into
  * 250/100/50/10/1 Hz exactly, so each expected run count is exact.
  *
@@ -56,6 +62,8 @@
 #define SEM_TIMEOUT_US 20000u
 #define STOP_TIMEOUT_US 100000u
 #define RUN_TOLERANCE 1u /* runs: one release may still be pending */
+#define WQ_PERIOD_US 10000u
+#define WQ_SHOT_TIMEOUT_US 100000u
 
 #define OBJ_CAP 32u  /* 20 objects arrive per 50 Hz drain */
 #define BYTE_CAP 64u /* at most 20 bytes arrive per IO period */
@@ -281,11 +289,16 @@ static volatile uint32_t pong_taken;
 static volatile uint32_t sem_timeouts;
 
 /* ISR context (virtual-timer callback): kernel lock not held. */
+static mt_work_t wq_isr_item;
+static volatile uint32_t wq_isr_acts;
+
 static void isr_tick(void *arg)
 {
     (void)arg;
     isr_signals++;
     mt_sem_signal_isr(&isr_sem);
+    (void)mt_work_schedule_isr(&wq_isr_item); /* a merge is counted by the queue */
+    wq_isr_acts++;
 }
 
 static void sensor_thread(void *arg)
@@ -327,6 +340,37 @@ static void ponger_thread(void *arg)
         mt_sem_signal(&pong_sem);
     }
     mt_sem_signal(&ponger_done);
+}
+
+/* ---- Work queue: interval item, ISR-scheduled item, single shot. ------- */
+
+static mt_wq_t wq_smoke;
+static mt_chibios_wq_thread_t wq_thread;
+static mt_work_t wq_periodic;
+static mt_work_t wq_shot;
+static uint32_t wq_periodic_runs; /* queue thread */
+static uint32_t wq_isr_runs;      /* queue thread */
+static uint32_t wq_shot_runs;     /* queue thread */
+static mt_status_t wq_shot_status;
+
+static void w_periodic(void *arg)
+{
+    (void)arg;
+    wq_periodic_runs++;
+    spin_us(50u);
+}
+
+static void w_isr(void *arg)
+{
+    (void)arg;
+    wq_isr_runs++;
+}
+
+static void w_shot(void *arg)
+{
+    (void)arg;
+    wq_shot_runs++;
+    spin_us(20u);
 }
 
 /* ---- Task table. ------------------------------------------------------- */
@@ -391,6 +435,7 @@ static uint64_t timer_stack[128];
 static uint64_t io_stack[128];
 static uint64_t sensor_stack[96];
 static uint64_t ponger_stack[96];
+static uint64_t wq_stack[128];
 
 static mt_proc_set_t timer_procs;
 static mt_proc_set_t io_procs;
@@ -421,6 +466,22 @@ static void setup(void)
     check(mt_proc_register(&io_procs, p_io_beat, (void *)0) == MT_OK, "register io_beat");
     check(mt_proc_register(&io_procs, p_io_beat, (void *)0) == MT_E_DUPLICATE,
           "duplicate proc refused");
+
+    mt_wq_init(&wq_smoke, "wq_smoke", MT_PRIO_CAN, 0);
+    mt_work_init(&wq_periodic, w_periodic, (void *)0);
+    mt_work_init(&wq_isr_item, w_isr, (void *)0);
+    mt_work_init(&wq_shot, w_shot, (void *)0);
+    check(mt_wq_attach(&wq_smoke, &wq_periodic) == MT_OK, "attach wq_periodic");
+    check(mt_wq_attach(&wq_smoke, &wq_isr_item) == MT_OK, "attach wq_isr");
+    check(mt_wq_attach(&wq_smoke, &wq_shot) == MT_OK, "attach wq_shot");
+    check(mt_wq_attach(&wq_smoke, &wq_shot) == MT_E_DUPLICATE, "second attach refused");
+    check(mt_proc_register(&timer_procs, mt_wq_timer_proc, &wq_smoke) == MT_OK,
+          "register wq timer proc");
+    check(mt_chibios_wq_start(&wq_thread, &wq_smoke, wq_stack, (uint32_t)sizeof(wq_stack)) ==
+              MT_OK,
+          "start wq thread");
+    wq_shot_status = mt_work_run_wait(&wq_shot, WQ_SHOT_TIMEOUT_US);
+    check((wq_shot_status == MT_OK) && (wq_shot_runs == 1u), "wq single shot");
 
     st = mt_sched_init(&sched, tasks, NTASKS, LOOP_HZ, &bad_index);
     if (st != MT_OK) {
@@ -453,6 +514,7 @@ static void run(void)
 {
     check(mt_chibios_isr_timer_start(&isr_timer_id, ISR_PERIOD_US, isr_tick, (void *)0) == MT_OK,
           "start ISR timer");
+    check(mt_work_schedule_interval(&wq_periodic, WQ_PERIOD_US, 0u) == MT_OK, "wq interval");
     check(mt_chibios_metronome_init(&metronome, LOOP_HZ) == MT_OK, "metronome init");
     while ((metronome.samples + metronome.missed) < RUN_PERIODS) {
         mt_sched_loop_once(&sched, mt_chibios_metronome_wait, &metronome);
@@ -469,6 +531,10 @@ static void shutdown(void)
     check(mt_chibios_proc_thread_stop(&timer_thread, STOP_TIMEOUT_US) == MT_OK,
           "timer thread stopped");
     check(mt_chibios_proc_thread_stop(&io_thread, STOP_TIMEOUT_US) == MT_OK, "io thread stopped");
+    /* No activation is left to come: stop the queue thread, then run what is queued. */
+    check(mt_work_cancel(&wq_periodic) == MT_OK, "wq cancel");
+    check(mt_chibios_wq_stop(&wq_thread, STOP_TIMEOUT_US) == MT_OK, "wq thread stopped");
+    (void)mt_wq_run_pending(&wq_smoke, 10u);
     /* Both threads have exited: main is now the only consumer. */
     t_obj_drain((void *)0);
     p_byte_pull((void *)0);
@@ -645,7 +711,69 @@ static void report_sems(void)
     check(sem_timeouts == 0u, "sem: no timeout");
 }
 
-static const char *const timer_proc_names[] = {"obj_push", "byte_push"};
+static void report_wq(void)
+{
+    mt_wq_report_t q;
+    mt_work_report_t p;
+    mt_work_report_t i;
+    /* the timer proc ran `calls` times, 1 ms apart; the first call activated the item */
+    uint32_t calls = timer_procs.procs[2].calls;
+    uint32_t expect = (calls == 0u) ? 0u : ((((calls - 1u) * TIMER_PERIOD_US) / WQ_PERIOD_US) + 1u);
+
+    mt_wq_report(&wq_smoke, &q);
+    mt_work_report(&wq_periodic, &p);
+    mt_work_report(&wq_isr_item, &i);
+    fw_puts("wq ");
+    fw_puts(q.name);
+    fw_puts(": runs ");
+    put_u(q.runs);
+    fw_puts(" merged ");
+    fw_put_u32(q.merged);
+    fw_puts(" missed ");
+    fw_put_u32(q.missed);
+    fw_puts(" max depth ");
+    fw_put_u32(q.max_depth);
+    fw_puts(" max latency ");
+    fw_put_u32(q.max_latency_us);
+    fw_puts(" us");
+    nl();
+    fw_puts("  periodic: runs ");
+    put_u(p.runs);
+    fw_puts(" expect ");
+    fw_put_u32(expect);
+    fw_puts(", interval min/mean/max ");
+    fw_put_u32(p.min_interval_us);
+    fw_putc('/');
+    fw_put_u32(p.mean_interval_us);
+    fw_putc('/');
+    fw_put_u32(p.max_interval_us);
+    fw_puts(" us, run max ");
+    fw_put_u32(p.max_run_us);
+    fw_puts(" us, rate ");
+    fw_put_u32(p.rate_mhz);
+    fw_puts(" mHz, missed ");
+    fw_put_u32(p.missed);
+    fw_puts(" merged ");
+    fw_put_u32(p.merged);
+    nl();
+    fw_puts("  isr: activations ");
+    fw_put_u32(wq_isr_acts);
+    fw_puts(" runs ");
+    put_u(i.runs);
+    fw_puts(" merged ");
+    fw_put_u32(i.merged);
+    fw_puts("; single shot ");
+    fw_puts(mt_status_str(wq_shot_status));
+    nl();
+    check((p.runs + RUN_TOLERANCE >= expect) && (p.runs <= expect + RUN_TOLERANCE) &&
+              (p.missed == 0u) && (p.merged == 0u),
+          "wq: interval item once per period");
+    check((i.runs + i.merged == wq_isr_acts) && (i.runs == wq_isr_runs) && (wq_isr_acts > 0u),
+          "wq: every ISR activation run or merged");
+    check((q.depth == 0u) && (wq_periodic_runs == (uint32_t)p.runs), "wq: drained");
+}
+
+static const char *const timer_proc_names[] = {"obj_push", "byte_push", "wq_timer"};
 static const char *const io_proc_names[] = {"byte_pull", "io_beat"};
 
 int main(void)
@@ -680,6 +808,7 @@ int main(void)
     report_procs("io", &io_thread, io_proc_names);
     report_rings();
     report_sems();
+    report_wq();
     sim_ms = (uint32_t)(mt_port_now_us() / 1000u);
     fw_puts("sim time ");
     fw_put_u32(sim_ms);
