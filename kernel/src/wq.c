@@ -8,6 +8,8 @@
  */
 #include "mt/wq.h"
 
+#include <stddef.h>
+
 #include "mt_invoke.h"
 
 #define WQ_CAP MT_CFG_WQ_MAX_ITEMS
@@ -38,7 +40,12 @@ static uint64_t sat_add_u64(uint64_t a, uint64_t b)
 */
 static uint64_t sub_sat_u64(uint64_t a, uint64_t b)
 {
-    return (a >= b) ? (a - b) : 0u;
+    uint64_t d = 0u;
+
+    if (a >= b) {
+        d = a - b;
+    }
+    return d;
 }
 
 /*@ assigns \nothing;
@@ -46,7 +53,12 @@ static uint64_t sub_sat_u64(uint64_t a, uint64_t b)
 */
 static uint32_t inc_sat_u32(uint32_t a)
 {
-    return (a < U32_MAX_) ? (a + 1u) : U32_MAX_;
+    uint32_t v = U32_MAX_;
+
+    if (a < U32_MAX_) {
+        v = a + 1u;
+    }
+    return v;
 }
 
 /*@ assigns \nothing;
@@ -54,7 +66,12 @@ static uint32_t inc_sat_u32(uint32_t a)
 */
 static uint32_t add_sat_u32(uint32_t a, uint32_t b)
 {
-    return (a <= (U32_MAX_ - b)) ? (a + b) : U32_MAX_;
+    uint32_t v = U32_MAX_;
+
+    if (a <= (U32_MAX_ - b)) {
+        v = a + b;
+    }
+    return v;
 }
 
 /* ---- FIFO ---------------------------------------------------------------------------------- */
@@ -162,7 +179,7 @@ static void stats_clear(mt_wq_stats_t *st)
     assigns *e;
     ensures fn: e->fn == fn && e->arg == arg;
     ensures idle: e->timer == MT_WQ_TIMER_OFF && e->shot == MT_WQ_SHOT_NONE && MtSemInv(&e->done) &&
-                  e->done.token == 0;
+                  e->done.token == 0 && e->done.waiter == \null;
     ensures zero: e->stats.starts == 0 && e->stats.runs == 0 && e->stats.merged == 0 &&
                   e->stats.missed == 0;
 */
@@ -225,6 +242,59 @@ static void note_finish(mt_wq_stats_t *st, uint64_t dt)
     }
     st->total_run_us = sat_add_u64(st->total_run_us, dt);
     st->runs = (st->runs < UINT64_MAX) ? (st->runs + 1u) : UINT64_MAX;
+}
+
+/* The start of a run of slot s at t0, in the item's and the queue's statistics. */
+/*@ requires inv: MtWqInv(q);
+    requires slot: s < MT_CFG_WQ_MAX_ITEMS;
+    assigns q->slot[s].stats.starts, q->slot[s].stats.first_start_us, q->slot[s].stats.last_start_us,
+            q->slot[s].stats.min_interval_us, q->slot[s].stats.max_interval_us,
+            q->slot[s].stats.max_latency_us, q->stats.starts, q->stats.first_start_us,
+            q->stats.last_start_us, q->stats.min_interval_us, q->stats.max_interval_us,
+            q->stats.max_latency_us;
+    ensures inv: MtWqInv(q);
+    ensures started: q->slot[s].stats.starts == (\old(q->slot[s].stats.starts) < 0xFFFFFFFFFFFFFFFF ?
+                                                 \old(q->slot[s].stats.starts) + 1 : 0xFFFFFFFFFFFFFFFF);
+    ensures runs_kept: q->stats.runs == \old(q->stats.runs) &&
+        \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==>
+            q->slot[t].stats.runs == \old(q->slot[t].stats.runs) && q->slot[t].fn == \old(q->slot[t].fn) &&
+            q->slot[t].arg == \old(q->slot[t].arg);
+*/
+static void note_start_slot(mt_wq_t *q, uint32_t s, uint64_t t0, uint64_t lat)
+{
+    note_start(&q->slot[s].stats, t0, lat);
+    note_start(&q->stats, t0, lat);
+}
+
+/* A run of slot s that took dt, in the item's and the queue's statistics. */
+/*@ requires inv: MtWqInv(q);
+    requires slot: s < MT_CFG_WQ_MAX_ITEMS;
+    assigns q->slot[s].stats.runs, q->slot[s].stats.total_run_us, q->slot[s].stats.max_run_us,
+            q->stats.runs, q->stats.total_run_us, q->stats.max_run_us;
+    ensures inv: MtWqInv(q);
+    ensures ran: q->slot[s].stats.runs == (\old(q->slot[s].stats.runs) < 0xFFFFFFFFFFFFFFFF ?
+                                           \old(q->slot[s].stats.runs) + 1 : 0xFFFFFFFFFFFFFFFF);
+    ensures ran_wq: q->stats.runs == (\old(q->stats.runs) < 0xFFFFFFFFFFFFFFFF ?
+                                      \old(q->stats.runs) + 1 : 0xFFFFFFFFFFFFFFFF);
+    ensures kept: \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==>
+        q->slot[t].stats.starts == \old(q->slot[t].stats.starts) && q->slot[t].fn == \old(q->slot[t].fn) &&
+        q->slot[t].arg == \old(q->slot[t].arg);
+*/
+static void note_finish_slot(mt_wq_t *q, uint32_t s, uint64_t dt)
+{
+    note_finish(&q->slot[s].stats, dt);
+    note_finish(&q->stats, dt);
+}
+
+/* Wake the queue's thread (lock held). */
+/*@ requires held: MtLocked == 1;
+    requires inv: MtWqInv(q);
+    assigns q->wake;
+    ensures inv: MtWqInv(q);
+*/
+static void wake_i(mt_wq_t *q)
+{
+    mt_sem_signal_i(&q->wake);
 }
 
 /* An activation of slot s merged into its pending run. */
@@ -296,7 +366,7 @@ static mt_status_t schedule_slot_i(mt_wq_t *q, uint32_t s, uint64_t now)
     }
     fifo_push(q, s);
     note_queued(q, s, now);
-    mt_sem_signal_i(&q->wake);
+    wake_i(q);
     //@ assert inv: MtWqInv(q);
     //@ assert kept: MtWqFifoKept{Pre, Here}(q);
     //@ assert idle: MtWqIdleKept{Pre, Here}(q, s);
@@ -305,25 +375,59 @@ static mt_status_t schedule_slot_i(mt_wq_t *q, uint32_t s, uint64_t now)
 
 /* ---- init, attach -------------------------------------------------------------------------- */
 
-/* Position i of the identity permutation, slot i empty. */
+/* Position i of the identity permutation; slot i without function, timer or waiter (the
+ * other fields of a slot are set when an item is attached to it). */
 /*@ requires valid: \valid(q);
     requires index: i < MT_CFG_WQ_MAX_ITEMS;
-    assigns q->order[i], q->where[i], q->slot[i];
+    assigns q->order[i], q->where[i], q->slot[i].fn, q->slot[i].timer, q->slot[i].shot,
+            q->slot[i].done.token, q->slot[i].done.waiter, q->slot[i].done.merged;
     ensures identity: q->order[i] == i && q->where[i] == i;
     ensures empty: q->slot[i].timer == MT_WQ_TIMER_OFF && q->slot[i].shot == MT_WQ_SHOT_NONE &&
-                   MtSemInv(&q->slot[i].done);
+                   q->slot[i].done.token == 0 && q->slot[i].done.waiter == \null;
 */
 static void init_position(mt_wq_t *q, uint32_t i)
 {
     q->order[i] = (uint8_t)i;
     q->where[i] = (uint8_t)i;
-    slot_set(&q->slot[i], (mt_work_fn_t)0, (void *)0);
+    q->slot[i].fn = (mt_work_fn_t)0;
+    q->slot[i].timer = MT_WQ_TIMER_OFF;
+    q->slot[i].shot = MT_WQ_SHOT_NONE;
+    q->slot[i].done.token = 0u;
+    q->slot[i].done.waiter = (mt_port_tref_t)0;
+    q->slot[i].done.merged = 0u;
+}
+
+/* Every position and slot as init_position leaves it. */
+/*@ requires valid: \valid(q);
+    assigns q->order[0 .. MT_CFG_WQ_MAX_ITEMS - 1], q->where[0 .. MT_CFG_WQ_MAX_ITEMS - 1],
+            q->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1];
+    ensures identity: \forall integer j; 0 <= j < MT_CFG_WQ_MAX_ITEMS ==> q->order[j] == j && q->where[j] == j;
+    ensures slots: \forall integer j; 0 <= j < MT_CFG_WQ_MAX_ITEMS ==>
+        MtSemInv(&q->slot[j].done) && q->slot[j].shot <= MT_WQ_SHOT_DONE &&
+        q->slot[j].timer <= MT_WQ_TIMER_EVERY &&
+        (q->slot[j].timer == MT_WQ_TIMER_EVERY ==> q->slot[j].period_us >= 1);
+*/
+static void init_positions(mt_wq_t *q)
+{
+    uint32_t i;
+
+    /*@ loop invariant 0 <= i <= MT_CFG_WQ_MAX_ITEMS;
+        loop invariant \forall integer j; 0 <= j < i ==> q->order[j] == j && q->where[j] == j;
+        loop invariant \forall integer j; 0 <= j < i ==>
+            q->slot[j].timer == MT_WQ_TIMER_OFF && q->slot[j].shot == MT_WQ_SHOT_NONE;
+        loop invariant \forall integer j; 0 <= j < i ==>
+            q->slot[j].done.token == 0 && q->slot[j].done.waiter == \null;
+        loop assigns i, q->order[0 .. MT_CFG_WQ_MAX_ITEMS - 1], q->where[0 .. MT_CFG_WQ_MAX_ITEMS - 1],
+                     q->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1];
+        loop variant MT_CFG_WQ_MAX_ITEMS - i;
+    */
+    for (i = 0u; i < WQ_CAP; i++) {
+        init_position(q, i);
+    }
 }
 
 void mt_wq_init(mt_wq_t *q, const char *name, mt_prio_base_t base, int8_t offset)
 {
-    uint32_t i;
-
     q->name = name;
     q->prio_base = base;
     q->prio_offset = offset;
@@ -337,18 +441,7 @@ void mt_wq_init(mt_wq_t *q, const char *name, mt_prio_base_t base, int8_t offset
     q->run_start_us = 0u;
     mt_sem_init(&q->wake, false);
     stats_clear(&q->stats);
-    /*@ loop invariant 0 <= i <= MT_CFG_WQ_MAX_ITEMS;
-        loop invariant \forall integer j; 0 <= j < i ==> q->order[j] == j && q->where[j] == j;
-        loop invariant \forall integer j; 0 <= j < i ==>
-            q->slot[j].timer == MT_WQ_TIMER_OFF && q->slot[j].shot == MT_WQ_SHOT_NONE &&
-            MtSemInv(&q->slot[j].done);
-        loop assigns i, q->order[0 .. MT_CFG_WQ_MAX_ITEMS - 1], q->where[0 .. MT_CFG_WQ_MAX_ITEMS - 1],
-                     q->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1];
-        loop variant MT_CFG_WQ_MAX_ITEMS - i;
-    */
-    for (i = 0u; i < WQ_CAP; i++) {
-        init_position(q, i);
-    }
+    init_positions(q);
     //@ assert fifo: MtWqFifo(q);
     //@ assert slots: MtWqSlots(q);
     //@ assert runner: MtWqRunner(q);
@@ -358,7 +451,7 @@ void mt_work_init(mt_work_t *w, mt_work_fn_t fn, void *arg)
 {
     w->fn = fn;
     w->arg = arg;
-    w->wq = (mt_wq_t *)0;
+    w->wq = NULL;
     w->slot = 0u;
 }
 
@@ -381,6 +474,9 @@ static void attach_slot(mt_wq_t *q, mt_work_fn_t fn, void *arg)
 
     //@ assert idle: !MtWqQueued(q, s);
     slot_set(&q->slot[s], fn, arg);
+    //@ assert fifo: MtWqFifo(q);
+    //@ assert slots: MtWqSlots(q);
+    //@ assert runner: MtWqRunner(q);
     q->nitems = s + 1u;
 }
 
@@ -391,7 +487,7 @@ mt_status_t mt_wq_attach_i(mt_wq_t *q, mt_work_t *w)
     if (w->fn == (mt_work_fn_t)0) {
         return MT_E_INVALID;
     }
-    if (w->wq != (mt_wq_t *)0) {
+    if (w->wq != NULL) {
         return MT_E_DUPLICATE;
     }
     if (s >= WQ_CAP) {
@@ -570,15 +666,14 @@ static void timer_next(mt_wq_t *q, uint32_t s, uint64_t now)
 {
     mt_wq_slot_t *e = &q->slot[s];
     uint64_t p = e->period_us;
-    uint32_t missed;
 
-    if (e->timer == MT_WQ_TIMER_ONCE) {
-        timer_off(q, s);
-    } else if ((now <= (UINT64_MAX - (2u * p))) && (e->deadline_us <= (UINT64_MAX - p))) {
-        missed = mt_proc_period_next(&e->deadline_us, now, e->period_us);
+    if ((e->timer == MT_WQ_TIMER_EVERY) && (now <= (UINT64_MAX - (2u * p))) &&
+        (e->deadline_us <= (UINT64_MAX - p))) {
+        uint32_t missed = mt_proc_period_next(&e->deadline_us, now, e->period_us);
         note_missed(q, s, missed);
     } else {
-        timer_off(q, s); /* 64-bit time is running out (after 584,000 years) */
+        /* a delayed item fired; or 64-bit time is running out (after 584,000 years) */
+        timer_off(q, s);
     }
 }
 
@@ -737,6 +832,10 @@ static void set_running(mt_wq_t *q, uint32_t s, uint64_t t0)
     ensures started: q->slot[\result].stats.starts ==
         (\old(q->slot[q->order[q->head]].stats.starts) < 0xFFFFFFFFFFFFFFFF ?
          \old(q->slot[q->order[q->head]].stats.starts) + 1 : 0xFFFFFFFFFFFFFFFF);
+    ensures runs_kept: q->stats.runs == \old(q->stats.runs) && q->nitems == \old(q->nitems) &&
+        \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==>
+            q->slot[t].stats.runs == \old(q->slot[t].stats.runs) && q->slot[t].fn == \old(q->slot[t].fn) &&
+            q->slot[t].arg == \old(q->slot[t].arg);
     ensures time: MtPortNow >= \old(MtPortNow);
 */
 static uint32_t start_i(mt_wq_t *q)
@@ -745,8 +844,7 @@ static uint32_t start_i(mt_wq_t *q)
     uint64_t t0 = mt_port_now_us();
     uint64_t lat = sub_sat_u64(t0, q->slot[s].queued_us);
 
-    note_start(&q->slot[s].stats, t0, lat);
-    note_start(&q->stats, t0, lat);
+    note_start_slot(q, s, t0, lat);
     if (q->slot[s].shot == MT_WQ_SHOT_ARMED) {
         set_shot(q, s, MT_WQ_SHOT_RUN);
     }
@@ -777,11 +875,32 @@ static uint32_t start_i(mt_wq_t *q)
     ensures held: MtLocked == 1;
     ensures inv: MtWqInv(q);
     ensures grown: q->nitems >= \old(q->nitems);
+    ensures runner_kept: q->running == \old(q->running) && q->run_start_us == \old(q->run_start_us) &&
+        q->stats.runs == \old(q->stats.runs);
+    ensures items_kept: \forall integer t; 0 <= t < \old(q->nitems) ==>
+        q->slot[t].fn == \old(q->slot[t].fn) && q->slot[t].arg == \old(q->slot[t].arg);
+    ensures stats_kept: \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==>
+        q->slot[t].stats.runs == \old(q->slot[t].stats.runs) &&
+        q->slot[t].stats.starts == \old(q->slot[t].stats.starts);
 */
 static void relock_after_run(mt_wq_t *q)
 {
     (void)q;
     mt_port_lock();
+}
+
+/* The single-shot run of slot s has ended: DONE, and the waiter released (lock held). */
+/*@ requires held: MtLocked == 1;
+    requires inv: MtWqInv(q);
+    requires slot: s < MT_CFG_WQ_MAX_ITEMS;
+    assigns q->slot[s].shot, q->slot[s].done;
+    ensures inv: MtWqInv(q);
+    ensures done: q->slot[s].shot == MT_WQ_SHOT_DONE;
+*/
+static void shot_done_i(mt_wq_t *q, uint32_t s)
+{
+    q->slot[s].shot = MT_WQ_SHOT_DONE;
+    mt_sem_signal_i(&q->slot[s].done);
 }
 
 /* End the run in progress (lock held): statistics, single-shot completion, and
@@ -800,21 +919,23 @@ static void relock_after_run(mt_wq_t *q)
          \old(q->slot[q->running].stats.runs) + 1 : 0xFFFFFFFFFFFFFFFF);
     ensures ran_wq: q->stats.runs ==
         (\old(q->stats.runs) < 0xFFFFFFFFFFFFFFFF ? \old(q->stats.runs) + 1 : 0xFFFFFFFFFFFFFFFF);
+    ensures kept: q->nitems == \old(q->nitems) && \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==>
+        q->slot[t].stats.starts == \old(q->slot[t].stats.starts) && q->slot[t].fn == \old(q->slot[t].fn) &&
+        q->slot[t].arg == \old(q->slot[t].arg);
+    ensures items: MtWqItemsKept{Pre, Post}(q);
 */
 static void finish_i(mt_wq_t *q)
 {
     uint32_t s = q->running;
     uint64_t dt = sub_sat_u64(mt_port_now_us(), q->run_start_us);
 
-    note_finish(&q->slot[s].stats, dt);
-    note_finish(&q->stats, dt);
+    note_finish_slot(q, s, dt);
     if (q->slot[s].shot == MT_WQ_SHOT_RUN) {
-        set_shot(q, s, MT_WQ_SHOT_DONE);
-        mt_sem_signal_i(&q->slot[s].done);
+        shot_done_i(q, s);
     }
     set_running(q, MT_WQ_NONE, q->run_start_us);
     if (q->count > 0u) {
-        mt_sem_signal_i(&q->wake);
+        wake_i(q);
     }
 }
 
@@ -828,6 +949,7 @@ mt_status_t mt_wq_run_once(mt_wq_t *q)
     if (q->running != MT_WQ_NONE) {
         note_refused(q);
         mt_port_unlock();
+        //@ assert items: MtWqItemsKept{Pre, Here}(q);
         return MT_E_BUSY;
     }
     if (q->count == 0u) {
@@ -838,10 +960,14 @@ mt_status_t mt_wq_run_once(mt_wq_t *q)
     fn = q->slot[s].fn;
     arg = q->slot[s].arg;
     mt_port_unlock();
+    //@ assert items: MtWqItemsKept{Pre, Here}(q);
     mt_invoke(fn, arg);
     relock_after_run(q);
+    /*@ ghost Relocked: ; */
+    //@ assert items: MtWqItemsKept{Pre, Here}(q);
     finish_i(q);
     mt_port_unlock();
+    //@ assert items: MtWqItemsKept{Relocked, Here}(q);
     return MT_OK;
 }
 
@@ -880,6 +1006,25 @@ static uint32_t stop_requested(const mt_wq_t *q)
     return v;
 }
 
+/* Sleep on `wake` until the next activation (task context).
+ * @retval MT_OK woken. @retval MT_E_BUSY another thread already waits on the queue. */
+/*@ requires not_held: MtLocked == 0;
+    requires inv: MtWqInv(q);
+    assigns q->wake, MtPortNow, MtLocked;
+    ensures released: MtLocked == 0;
+    ensures inv: MtWqInv(q);
+    ensures status: \result == MT_OK || \result == MT_E_BUSY;
+*/
+static mt_status_t wait_wake(mt_wq_t *q)
+{
+    mt_status_t st = MT_OK;
+
+    if (mt_sem_wait(&q->wake, MT_WAIT_FOREVER) == MT_E_BUSY) {
+        st = MT_E_BUSY;
+    }
+    return st;
+}
+
 mt_status_t mt_wq_serve_once(mt_wq_t *q)
 {
     if (stop_requested(q) != 0u) {
@@ -889,12 +1034,7 @@ mt_status_t mt_wq_serve_once(mt_wq_t *q)
         return MT_OK;
     }
     /* nothing to run (or another runner's turn): sleep until the next activation */
-    if (mt_sem_wait(&q->wake, MT_WAIT_FOREVER) == MT_E_BUSY) {
-        //@ assert inv: MtWqInv(q);
-        return MT_E_BUSY;
-    }
-    //@ assert inv: MtWqInv(q);
-    return MT_OK;
+    return wait_wake(q);
 }
 
 void mt_wq_thread_body(void *arg)
@@ -923,7 +1063,7 @@ void mt_wq_request_stop(mt_wq_t *q)
 {
     mt_port_lock();
     set_stop(q);
-    mt_sem_signal_i(&q->wake);
+    wake_i(q);
     mt_port_unlock();
 }
 
@@ -974,13 +1114,17 @@ mt_status_t mt_work_run_wait(mt_work_t *w, uint64_t timeout_us)
         return MT_E_BUSY;
     }
     (void)schedule_slot_i(q, s, mt_port_now_us());
+    //@ assert same: w->wq == q && w->slot == s;
     shot_reset(q, s, MT_WQ_SHOT_ARMED);
+    //@ assert same: w->wq == q && w->slot == s;
     st = (wait_done_s(q, s, timeout_us) == MT_WQ_SHOT_DONE) ? MT_OK : MT_E_TIMEOUT;
+    //@ assert same: w->wq == q && w->slot == s && s < q->nitems;
     /* Either way nothing is left behind: a completion that raced with the
      * timeout counts as done, and its token is dropped with the state. */
     shot_reset(q, s, MT_WQ_SHOT_NONE);
+    //@ assert same: w->wq == q && w->slot == s && s < q->nitems;
+    //@ assert disarmed: q->slot[s].shot == MT_WQ_SHOT_NONE && q->slot[s].done.token == 0;
     mt_port_unlock();
-    //@ assert attached: MtWorkAttached(w);
     return st;
 }
 
@@ -1039,10 +1183,17 @@ void mt_work_report(const mt_work_t *w, mt_work_report_t *r)
 {
     const mt_wq_t *q = w->wq;
 
+    uint32_t queued;
+    uint32_t running = 0u;
+
     mt_port_lock();
+    queued = is_queued(q, w->slot);
+    if (q->running == w->slot) {
+        running = 1u;
+    }
     fill_work_report(&q->slot[w->slot], r);
-    r->queued = is_queued(q, w->slot);
-    r->running = (q->running == w->slot) ? 1u : 0u;
+    r->queued = queued;
+    r->running = running;
     mt_port_unlock();
 }
 

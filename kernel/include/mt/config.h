@@ -42,7 +42,7 @@
 #endif
 
 /** Items one work queue holds (mt/wq.h): the FIFO, the timers and the
- *  statistics are one slot record per item (about 140 bytes each). */
+ *  statistics are one slot record per item (112 bytes on Cortex-M4). */
 #if !defined(MT_CFG_WQ_MAX_ITEMS)
 #define MT_CFG_WQ_MAX_ITEMS 16u
 #endif

@@ -107,7 +107,7 @@ typedef struct {
     mt_wq_stats_t stats;
 } mt_wq_slot_t;
 
-typedef struct {
+typedef struct mt_wq {
     const char *name;          /**< for reports and the thread name */
     mt_prio_base_t prio_base;  /**< priority of the serving thread: base ... */
     int8_t prio_offset;        /**< ... plus offset */
@@ -127,7 +127,7 @@ typedef struct {
 } mt_wq_t;
 
 /** A work item: run function and argument; attached to one queue. */
-typedef struct {
+typedef struct mt_work {
     mt_work_fn_t fn;  /**< run function */
     void *arg;        /**< its argument */
     mt_wq_t *wq;      /**< the queue (NULL until attached) */
@@ -210,10 +210,19 @@ typedef struct {
 */
 
 /* Every item queued at L1 is still queued at L2, at the same distance from the head: FIFO
- * order is kept (an activation only appends). No item but s became queued. */
+ * order is kept (an activation only appends). No item but s became queued. Attached items
+ * stay attached with their functions. */
 /*@ predicate MtWqFifoKept{L1, L2}(mt_wq_t *q) =
         \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==> \at(MtWqQueued(q, t), L1) ==>
             \at(MtWqQueued(q, t), L2) && \at(MtWqRel(q, q->where[t]), L2) == \at(MtWqRel(q, q->where[t]), L1);
+
+    predicate MtWqItemsKept{L1, L2}(mt_wq_t *q) =
+        \at(q->nitems, L2) >= \at(q->nitems, L1) &&
+        \forall integer t; 0 <= t < \at(q->nitems, L1) ==>
+            \at(q->slot[t].fn, L2) == \at(q->slot[t].fn, L1) && \at(q->slot[t].arg, L2) == \at(q->slot[t].arg, L1);
+
+    lemma MtWqItemsKept_trans{L1, L2, L3}: \forall mt_wq_t *q;
+        MtWqItemsKept{L1, L2}(q) ==> MtWqItemsKept{L2, L3}(q) ==> MtWqItemsKept{L1, L3}(q);
 
     predicate MtWqIdleKept{L1, L2}(mt_wq_t *q, integer s) =
         \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==> t != s ==>
@@ -525,8 +534,7 @@ void mt_wq_timer_proc(void *arg);
     assigns *q, MtPortNow, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
-    ensures items_kept: q->nitems >= \old(q->nitems) && \forall integer s; 0 <= s < \old(q->nitems) ==>
-        q->slot[s].fn == \old(q->slot[s].fn) && q->slot[s].arg == \old(q->slot[s].arg);
+    ensures items_kept: MtWqItemsKept{Pre, Post}(q);
     behavior busy:
       assumes q->running != MT_WQ_NONE;
       ensures status: \result == MT_E_BUSY;

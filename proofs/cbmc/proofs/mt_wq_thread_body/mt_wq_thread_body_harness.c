@@ -1,0 +1,20 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* CBMC proof: mt_wq_thread_body against its ACSL contract (kernel/include/mt/wq.h), translated by
+ * tools/acsl2cbmc.py into mt_wq_thread_body_contract.h. Shape: nondeterministic objects, assume the requires,
+ * snapshot, call, assert ensures/behaviours/assigns; MTC_REACH lines are coverage witnesses that
+ * the harness admits the extreme values named. */
+#include "mtc_objects.h"
+#include "mt_wq_thread_body_contract.h"
+
+void harness(void)
+{
+    mt_wq_t *q = mtc_wq();
+    mtc_ghosts_nondet();
+
+    __CPROVER_assume(mtc_pre_mt_wq_thread_body((void *)q));
+    mtc_snapshot();
+    mt_wq_thread_body((void *)q);
+    mtc_post_mt_wq_thread_body((void *)q);
+
+    MTC_REACH(q->stop == 1u && MTC_OLDV(q->stop) == 0u);
+}
