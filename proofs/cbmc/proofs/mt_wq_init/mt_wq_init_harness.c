@@ -20,5 +20,5 @@ void harness(void)
     mtc_post_mt_wq_init(q, name, base, offset);
 
     MTC_REACH(base == MT_PRIO_BOOST && offset == -128 && name != (const char *)0);
-    MTC_REACH(MTC_OLDV(q->stats.runs) == UINT64_MAX && MTC_OLDV(q->slot[3].stats.merged) == 0xFFFFFFFFu);
+    MTC_REACH(MTC_OLDV(q->stats.runs) == UINT64_MAX && MTC_OLDV(q->slot[MT_CFG_WQ_MAX_ITEMS - 1u].stats.merged) == 0xFFFFFFFFu);
 }

@@ -20,5 +20,6 @@ void harness(void)
     MTC_REACH(res == MT_CFG_WQ_MAX_ITEMS && q->count == MT_CFG_WQ_MAX_ITEMS);
     MTC_REACH(res >= 1u && q->slot[0].stats.missed == 0xFFFFFFFFu && MTC_OLDV(q->slot[0].stats.missed) < 0xFFFFFFFFu);
     MTC_REACH(res >= 1u && MTC_OLDV(q->slot[1].timer) == MT_WQ_TIMER_EVERY && q->slot[1].timer == MT_WQ_TIMER_OFF);
-    MTC_REACH(now == UINT64_MAX && res >= 1u && q->slot[2].timer == MT_WQ_TIMER_EVERY);
+    MTC_REACH(now == UINT64_MAX && res == MT_CFG_WQ_MAX_ITEMS);
+    MTC_REACH(res == 0u && q->slot[0].timer == MT_WQ_TIMER_EVERY && q->slot[0].deadline_us == UINT64_MAX);
 }
