@@ -10,6 +10,7 @@
 // Timing is checked in simulated time (no thread runs the queue: the test runs
 // it with mt_wq_run_pending); the thread tests only check counts and order.
 #include <atomic>
+#include <cstdio>
 #include <chrono>
 #include <memory>
 #include <thread>
@@ -717,6 +718,12 @@ TEST_F(WqThread, StressSchedulersIsrTimerAgainstQueueThread)
     EXPECT_GT(fired.load(), 0u);
     EXPECT_GE(qr.refused, busy.load());  // the queue thread may be refused too
     EXPECT_GE(runs, 1u);
+    // the race happened: merges, a refused second runner (informational)
+    std::printf("wq stress: %llu activations (%llu timer), %llu runs, %llu merged, %u refused\n",
+                static_cast<unsigned long long>(activations),
+                static_cast<unsigned long long>(fired.load()),
+                static_cast<unsigned long long>(runs), static_cast<unsigned long long>(item_merged),
+                qr.refused);
 }
 
 }  // namespace

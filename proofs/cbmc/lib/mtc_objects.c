@@ -145,6 +145,16 @@ mt_wq_t *mtc_wq(void)
     return q;
 }
 
+void mtc_wq_periods(mt_wq_t *q)
+{
+    static const uint32_t periods[] = {1u, 3u, 1000u, 0xFFFFFFFFu};
+    uint32_t i;
+
+    for (i = 0u; i < MT_CFG_WQ_MAX_ITEMS; i++) {
+        q->slot[i].period_us = MTC_PICK(periods);
+    }
+}
+
 mt_work_t *mtc_work(mt_wq_t *q)
 {
     mt_work_t *w = MTC_NEW(mt_work_t, 1u);

@@ -89,6 +89,11 @@ void *mtc_callback(void);
  * legal states: any permutation, head, count, counters, times, timers, single-shot states). */
 mt_wq_t *mtc_wq(void);
 
+/* Give each slot of q an interval from a set: 1, 3, 1000 and 0xFFFFFFFF us. It is the divisor
+ * of mt_proc_period_next's 64-bit division when a timer fires (a non-linear operand, hence a
+ * set: assumption B1); deadlines, times and every other field stay nondeterministic. */
+void mtc_wq_periods(mt_wq_t *q);
+
 /* A work item handle attached to q at a nondeterministic slot (the requires bounds it). */
 mt_work_t *mtc_work(mt_wq_t *q);
 

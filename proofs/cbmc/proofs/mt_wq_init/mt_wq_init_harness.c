@@ -11,7 +11,9 @@ void harness(void)
     mt_wq_t *q = MTC_NEW(mt_wq_t, 1u);
     const char *name = mtc_nondet_bool() ? (const char *)0 : (const char *)mtc_callback();
     mt_prio_base_t base = (mt_prio_base_t)mtc_nondet_u32();
-    int8_t offset = (int8_t)mtc_nondet_u8();
+    int32_t off = mtc_nondet_i32();
+    __CPROVER_assume(off >= -128 && off <= 127);
+    int8_t offset = (int8_t)off;
     mtc_ghosts_nondet();
 
     __CPROVER_assume(mtc_pre_mt_wq_init(q, name, base, offset));

@@ -17,7 +17,7 @@ void harness(void)
     mtc_post_mt_wq_serve_once(q, res);
 
     MTC_REACH(res == MT_E_STATE);
-    MTC_REACH(res == MT_OK && q->stats.runs == MTC_OLDV(q->stats.runs) + 1u);
+    MTC_REACH(res == MT_OK && q->stats.runs > MTC_OLDV(q->stats.runs));
     MTC_REACH(res == MT_OK && MTC_OLDV(q->count) == 0u && MTC_OLDV(q->wake.token) == 1u);
     MTC_REACH(res == MT_E_BUSY);
 }

@@ -9,6 +9,7 @@
 void harness(void)
 {
     mt_wq_t *q = mtc_wq();
+    mtc_wq_periods(q);
     mtc_ghosts_nondet();
 
     __CPROVER_assume(mtc_pre_mt_wq_timer_proc((void *)q));

@@ -9,6 +9,7 @@
 void harness(void)
 {
     mt_wq_t *q = mtc_wq();
+    mtc_wq_periods(q);
     uint64_t now = mtc_nondet_u64();
     mtc_ghosts_nondet();
 
