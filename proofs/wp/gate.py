@@ -250,6 +250,16 @@ def gate(args):
             problems.append(f"{s['module']}: no goals")
     acsl = acsl_scan([os.path.join(ROOT, "kernel"), os.path.join(ROOT, "proofs", "wp", "laws")])
     problems += acsl
+    # The smoke canary (make wp-canary): the smoke-test settings must still find contradictions.
+    canary = "not run"
+    cfile = os.path.join(wp_dir, "canary", "result.txt")
+    if os.path.exists(cfile):
+        with open(cfile, encoding="utf-8") as f:
+            lines = [x.strip() for x in f if x.strip()]
+        canary = lines[-1] if lines else "empty"
+    out.append(f"smoke canary: {canary}")
+    if not re.match(r"^wp-canary: \d+ functions as expected", canary):
+        problems.append(f"smoke canary: {canary} (make wp-canary, proofs/wp/canary/)")
     info = sum(len(s["info"]) for s in stats)
     if info:
         out.append(f"note: {info} [wp:pedantic-assigns] warnings (no \\from on assigned "
@@ -270,6 +280,7 @@ def gate(args):
         "smoke": tot["smoke"], "smoke_passed": tot["smoke_passed"],
         "by_prover": by_prover,
         "acsl_forbidden": acsl,
+        "smoke_canary": canary,
         "pass": ok,
     }
     sfile = args.summary or os.path.join(wp_dir, "summary.json")
