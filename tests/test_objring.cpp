@@ -513,7 +513,7 @@ TEST(ObjRingValid, EachBrokenRelationIsReported)
     EXPECT_FALSE(mt_oring_valid(&r)) << "head outside [0, 2 slots)";
     r = good;
     r.tail = 2u;
-    r.tail_cache = 1u;  // consumer believes more is readable than there is? no: fewer, fine
+    r.tail_cache = 1u;  // the consumer's cached tail may lag behind the real one
     r.head_cache = 0u;
     EXPECT_TRUE(mt_oring_valid(&r));
     r.tail_cache = 3u;  // consumer's cached tail ahead of the real one

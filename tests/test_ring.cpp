@@ -522,7 +522,7 @@ TEST(ByteRingValid, EachBrokenRelationIsReported)
     EXPECT_FALSE(mt_bring_valid(&r)) << "head cache outside [0, 2 cap)";
     r = good;
     r.tail = 3u;
-    r.head = 12u;  // 7 readable bytes counted from the other side: count 7 of 8, fine
+    r.head = 12u;  // 7 readable bytes (mirror indices), 1 free
     r.head_cache = 12u;
     r.tail_cache = 3u;
     EXPECT_TRUE(mt_bring_valid(&r));
