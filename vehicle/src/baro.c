@@ -72,7 +72,7 @@ void veh_baro_update(veh_t *v)
         uint8_t rec[16];
         int32_t alt_cm = (int32_t)lroundf(s->baro_alt * 100.0f);
         uint32_t p8 = (uint32_t)((sum / (float)n) * 8.0f);
-        uint64_t t = smp.t_us;
+        uint64_t t = veh_now(v); /* records carry the time they are written */
         uint32_t i;
         for (i = 0u; i < 8u; i++) {
             rec[i] = (uint8_t)(t >> (8u * i));

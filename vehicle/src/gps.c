@@ -48,8 +48,9 @@ void veh_gps_update(veh_t *v)
         uint32_t w[3] = {(uint32_t)f.lat, (uint32_t)f.lon, (uint32_t)f.alt_cm};
         uint32_t k;
         uint32_t j;
+        uint64_t t = veh_now(v); /* records carry the time they are written */
         for (k = 0u; k < 8u; k++) {
-            rec[k] = (uint8_t)(f.t_us >> (8u * k));
+            rec[k] = (uint8_t)(t >> (8u * k));
         }
         for (j = 0u; j < 3u; j++) {
             for (k = 0u; k < 4u; k++) {

@@ -382,11 +382,11 @@ void veh_summary(const char *stop_reason)
                (unsigned long long)overruns, (unsigned long long)slips,
                (unsigned long long)skips, (unsigned long long)nach);
     veh_printf("timer procs: %llu dispatches, %u periods missed; barometer: %llu samples "
-               "published, %llu taken, %u dropped, %u failed reads\n",
+               "published, %llu taken, %u dropped, %u queued, %u failed reads\n",
                (unsigned long long)v->timer_procs.dispatches,
                (unsigned)v->timer_procs.periods_missed, (unsigned long long)c->baro_sent,
                (unsigned long long)c->baro_received, (unsigned)c->baro_dropped,
-               (unsigned)c->baro_bus_fail);
+               (unsigned)mt_oring_available(&v->baro.ring), (unsigned)c->baro_bus_fail);
     veh_printf("bus: %llu transactions, %u waited for the bus, %u timeouts\n",
                (unsigned long long)c->bus_transfers, (unsigned)c->bus_waits,
                (unsigned)c->bus_timeouts);
