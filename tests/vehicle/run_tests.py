@@ -293,11 +293,15 @@ def t_sched_overloaded(S):
     rc, out, res, secs = S.sched(os.path.join(ROOT, "tests", "vehicle", "overloaded.def"))
     check(rc == 1 and "verdict: NOT SCHEDULABLE" in out, "overloaded table: rc %d\n%s" % (rc, out))
     v = {t["name"]: t for t in res["tasks"]}
-    check(v["telemetry_send"]["miss"] == "must" and v["telemetry_send"]["must_by_tick"] == 4,
-          "telemetry_send: %s" % v["telemetry_send"])
+    # hand analysis (overloaded.def): one heavy task per tick; nav_update at 2, 4, 6...,
+    # mission_update at 5, 9, 13..., telemetry_send at 3, 7, 11... (4 ticks apart, interval 2)
+    check(v["telemetry_send"]["miss"] == "must" and v["telemetry_send"]["must_by_tick"] == 7 and
+          v["telemetry_send"]["lateness_ticks"] == 2, "telemetry_send: %s" % v["telemetry_send"])
     check(all(t["miss"] == "never" for n, t in v.items() if n != "telemetry_send"), "others never miss")
     check(v["mission_update"]["lateness_ticks"] == 1, "mission_update is one tick late at worst")
-    check(res["counterexample"]["task"] == "telemetry_send" and res["counterexample"]["tick"] == 4,
+    check(all(t["lateness_ticks"] == 0 for n, t in v.items() if n not in ("telemetry_send", "mission_update")),
+          "the others are never late")
+    check(res["counterexample"]["task"] == "telemetry_send" and res["counterexample"]["tick"] == 7,
           "counterexample")
     check("counterexample: an execution in which telemetry_send falls two releases behind" in out, "printed")
     S.overloaded = res
@@ -330,6 +334,8 @@ def t_agreement(S):
     nominal = S.nominal if hasattr(S, "nominal") else None
     over = S.overloaded if hasattr(S, "overloaded") else None
     check(nominal is not None and over is not None, "the sched-check tests must run first")
+    for m in ("plain", "jumps", "land", "rtl", "loiter", "builtin"):
+        S.fly(os.path.join(MISSIONS, m + ".waypoints"))
     # nominal: every flight of this suite (Z3: never skipped) shows no skip and no slip
     flights = [run for (b, _), run in S.cache.items() if b == S.sitl and run.line("mission: COMPLETE") and
                "--overrun" not in run.out and "fault injection" not in run.out]
@@ -344,8 +350,8 @@ def t_agreement(S):
     for t in over["tasks"]:
         r = run.tasks[t["name"]]
         if t["miss"] == "must":
-            check(missed(r), "%s: Z3 says it must miss, SITL: slips %d pending %d" % (t["name"], r["slips"],
-                                                                                     r["pending"]))
+            check(missed(r) and r["slips"] > 0, "%s: Z3 says it must miss, SITL: slips %d pending %d"
+                  % (t["name"], r["slips"], r["pending"]))
         else:
             check(t["miss"] == "never" and not missed(r), "%s: Z3 %s, SITL slips %d pending %d"
                   % (t["name"], t["miss"], r["slips"], r["pending"]))

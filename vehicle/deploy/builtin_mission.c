@@ -10,14 +10,14 @@
 
 const mt_mission_cmd_t veh_builtin_mission[] = {
     /* id, frame, options, params 1..4, lat, lon, alt */
-    {MT_MAV_CMD_WAYPOINT, 0u, 1u, {0, 0, 0, 0}, 465197000, 65657000, 40000},       /* home */
-    {MT_MAV_CMD_TAKEOFF, 3u, 1u, {0, 0, 0, 0}, 0, 0, 1000},                        /* 1 */
-    {MT_MAV_CMD_WAYPOINT, 3u, 1u, {0, 0, 0, 0}, 465200593, 65657000, 1200},        /* 2 */
-    {MT_MAV_CMD_DO_CHANGE_SPEED, 2u, 1u, {1000, 8000, 0, 0}, 0, 0, 0},             /* 3 */
-    {MT_MAV_CMD_WAYPOINT, 3u, 1u, {0, 0, 0, 0}, 465200593, 65662222, 1200},        /* 4 */
-    {MT_MAV_CMD_DO_SET_SERVO, 2u, 1u, {9000, 1900000, 0, 0}, 0, 0, 0},             /* 5 */
-    {MT_MAV_CMD_LOITER_TIME, 3u, 1u, {2000, 0, 0, 0}, 465197000, 65662222, 1200},  /* 6 */
-    {MT_MAV_CMD_RETURN_TO_LAUNCH, 3u, 1u, {0, 0, 0, 0}, 0, 0, 0},                  /* 7 */
+    {MT_MAV_CMD_WAYPOINT, 0u, 1u, {0, 0, 0, 0}, 465197000, 65657000, 40000},      /* home */
+    {MT_MAV_CMD_TAKEOFF, 3u, 1u, {0, 0, 0, 0}, 0, 0, 1000},                       /* 1 */
+    {MT_MAV_CMD_WAYPOINT, 3u, 1u, {0, 0, 0, 0}, 465200593, 65657000, 1200},       /* 2 */
+    {MT_MAV_CMD_DO_CHANGE_SPEED, 2u, 1u, {1000, 8000, 0, 0}, 0, 0, 0},            /* 3 */
+    {MT_MAV_CMD_WAYPOINT, 3u, 1u, {0, 0, 0, 0}, 465200593, 65662222, 1200},       /* 4 */
+    {MT_MAV_CMD_DO_SET_SERVO, 2u, 1u, {9000, 1900000, 0, 0}, 0, 0, 0},            /* 5 */
+    {MT_MAV_CMD_LOITER_TIME, 3u, 1u, {2000, 0, 0, 0}, 465197000, 65662222, 1200}, /* 6 */
+    {MT_MAV_CMD_RETURN_TO_LAUNCH, 3u, 1u, {0, 0, 0, 0}, 0, 0, 0},                 /* 7 */
 };
 
 const uint16_t veh_builtin_mission_len =

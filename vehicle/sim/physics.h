@@ -36,22 +36,22 @@ void sim_params_default(sim_params_t *p);
 
 typedef struct {
     sim_params_t p;
-    float pos[3];     /**< NED, m */
-    float vel[3];     /**< m/s */
-    float acc[3];     /**< kinematic acceleration, m/s^2 */
-    float att[3];     /**< roll, pitch, yaw, rad */
-    float rates[3];   /**< body rates, rad/s */
-    float motor[4];   /**< actual motor outputs 0..1 */
-    float cmd[4];     /**< commanded outputs */
-    float wind[3];    /**< m/s, NED */
+    float pos[3];   /**< NED, m */
+    float vel[3];   /**< m/s */
+    float acc[3];   /**< kinematic acceleration, m/s^2 */
+    float att[3];   /**< roll, pitch, yaw, rad */
+    float rates[3]; /**< body rates, rad/s */
+    float motor[4]; /**< actual motor outputs 0..1 */
+    float cmd[4];   /**< commanded outputs */
+    float wind[3];  /**< m/s, NED */
     bool on_ground;
     uint32_t touchdowns;
     float last_touchdown_speed; /**< m/s */
     bool crashed;
-    float bat_volt;   /**< V */
-    float bat_amp;    /**< A */
-    float bat_mah;    /**< used */
-    uint64_t rng;     /**< noise generator state */
+    float bat_volt; /**< V */
+    float bat_amp;  /**< A */
+    float bat_mah;  /**< used */
+    uint64_t rng;   /**< noise generator state */
 } sim_t;
 
 void sim_init(sim_t *s, const sim_params_t *p, uint64_t seed);

@@ -9,8 +9,8 @@
 
 #include "vmath.h"
 
-#define SIM_SUBSTEP_US 500u      /* physics step */
-#define GPS_PERIOD_US 200000u    /* 5 Hz fixes */
+#define SIM_SUBSTEP_US 500u   /* physics step */
+#define GPS_PERIOD_US 200000u /* 5 Hz fixes */
 #define GPS_FIRST_FIX_US 1000000u
 
 static uint32_t load_u32(const uint32_t *p)

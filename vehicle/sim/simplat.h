@@ -36,21 +36,21 @@ typedef struct {
     veh_home_t home;
     simplat_wait_fn_t base_wait;
     void *base_ctx;
-    uint64_t t_us;          /**< time the model has been stepped to (0: not started) */
-    uint64_t boot_us;       /**< first sample */
-    veh_imu_sample_t imu;   /**< the current tick's sample */
-    veh_gps_fix_t gps;      /**< latest fix */
+    uint64_t t_us;        /**< time the model has been stepped to (0: not started) */
+    uint64_t boot_us;     /**< first sample */
+    veh_imu_sample_t imu; /**< the current tick's sample */
+    veh_gps_fix_t gps;    /**< latest fix */
     bool gps_new;
     uint64_t gps_next_us;
-    uint32_t baro_word;     /**< device register: pressure (1/8 Pa, 20 bits) | temp (12 bits) */
-    uint32_t batt_word;     /**< device register: mV (16 bits) | current in 10 mA (16 bits) */
-    uint32_t bus_busy;      /**< a transaction is under way */
-    uint32_t collisions;    /**< overlapping transactions (must stay 0) */
-    uint32_t transactions;  /**< bus transactions (32-bit: atomic on Cortex-M too) */
+    uint32_t baro_word;    /**< device register: pressure (1/8 Pa, 20 bits) | temp (12 bits) */
+    uint32_t batt_word;    /**< device register: mV (16 bits) | current in 10 mA (16 bits) */
+    uint32_t bus_busy;     /**< a transaction is under way */
+    uint32_t collisions;   /**< overlapping transactions (must stay 0) */
+    uint32_t transactions; /**< bus transactions (32-bit: atomic on Cortex-M too) */
     uint16_t servo[16];
     uint32_t servo_writes;
-    float max_speed;        /**< fastest ground speed seen, m/s */
-    float max_alt;          /**< highest altitude seen, m */
+    float max_speed; /**< fastest ground speed seen, m/s */
+    float max_alt;   /**< highest altitude seen, m */
 } simplat_t;
 
 /** Set up the world at home; the port's sample wait is base_wait(base_ctx). */

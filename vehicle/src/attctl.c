@@ -7,16 +7,16 @@
  */
 #include "veh_int.h"
 
-#define ANGLE_P 6.0f       /* 1/s, roll and pitch */
+#define ANGLE_P 6.0f /* 1/s, roll and pitch */
 #define YAW_ANGLE_P 3.0f
-#define RATE_MAX 3.0f      /* rad/s, roll and pitch */
+#define RATE_MAX 3.0f /* rad/s, roll and pitch */
 #define YAW_RATE_MAX 1.2f
-#define RATE_P 25.0f       /* 1/s */
-#define RATE_I 8.0f        /* 1/s^2 */
+#define RATE_P 25.0f /* 1/s */
+#define RATE_I 8.0f  /* 1/s^2 */
 #define RATE_D 0.25f
 #define YAW_RATE_P 10.0f
 #define YAW_RATE_I 2.0f
-#define TORQUE_MAX 1.6f    /* N m, roll and pitch */
+#define TORQUE_MAX 1.6f /* N m, roll and pitch */
 #define YAW_TORQUE_MAX 0.3f
 
 void veh_attitude_run(veh_t *v)

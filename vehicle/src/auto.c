@@ -163,8 +163,8 @@ static bool start_nav(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
             n->dest[2] = loc[2];
             veh_leg_start(v, edge);
         }
-        veh_say(v, "mission: #%u LOITER_TURNS started, %s turns of %s m", index,
-                fmt_m(a, n->turns), fmt_m(b, n->circle_r));
+        veh_say(v, "mission: #%u LOITER_TURNS started, %s turns of %s m", index, fmt_m(a, n->turns),
+                fmt_m(b, n->circle_r));
         return true;
     case MT_MAV_CMD_LAND:
         n->kind = VEH_NAV_LAND;
@@ -242,11 +242,15 @@ static bool start_do(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
     }
     case MT_MAV_CMD_DO_SET_HOME:
         if (c->param[0] == MT_MISSION_MILLI) {
-            veh_say(v, "mission: #%u DO_SET_HOME started, home stays at the launch point "
-                       "(local frame)", index);
+            veh_say(v,
+                    "mission: #%u DO_SET_HOME started, home stays at the launch point "
+                    "(local frame)",
+                    index);
         } else {
-            veh_say(v, "mission: #%u DO_SET_HOME started, home kept (moving home in flight is "
-                       "not supported)", index);
+            veh_say(v,
+                    "mission: #%u DO_SET_HOME started, home kept (moving home in flight is "
+                    "not supported)",
+                    index);
         }
         break;
     case MT_MAV_CMD_DO_LAND_START:
@@ -294,12 +298,10 @@ static bool verify_do(veh_t *v, const mt_mission_cmd_t *c)
     switch (c->id) {
     case MT_MAV_CMD_CONDITION_DELAY:
         return (float)(veh_now(v) - d->start_us) >= (d->value * 1.0e6f);
-    case MT_MAV_CMD_CONDITION_DISTANCE:
-        return veh_dist_xy(s->pos, s->nav.dest) <= d->value;
+    case MT_MAV_CMD_CONDITION_DISTANCE: return veh_dist_xy(s->pos, s->nav.dest) <= d->value;
     case MT_MAV_CMD_CONDITION_YAW:
         return fabsf(vm_wrap_pi(s->att[2] - d->value)) < (3.0f * VM_DEG2RAD);
-    default:
-        return true;
+    default: return true;
     }
 }
 

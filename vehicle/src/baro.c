@@ -9,9 +9,9 @@
  */
 #include "veh_int.h"
 
-#define BUS_TIMEOUT_US 200u  /* the timer proc never waits longer for the bus */
-#define CAL_SAMPLES 1000u    /* one second of samples at boot */
-#define K_POS 0.04f          /* vertical correction per 50 Hz run (time constant 1 s) */
+#define BUS_TIMEOUT_US 200u /* the timer proc never waits longer for the bus */
+#define CAL_SAMPLES 1000u   /* one second of samples at boot */
+#define K_POS 0.04f         /* vertical correction per 50 Hz run (time constant 1 s) */
 #define K_VEL 0.02f
 
 void veh_baro_timer_proc(void *arg)

@@ -63,9 +63,7 @@ void veh_gcs_update(veh_t *v)
     veh_gcs_cmd_t cmd = v->plat->gcs_poll(v->plat->ctx);
 
     switch (cmd) {
-    case VEH_GCS_ARM_AUTO:
-        arm_auto(v);
-        break;
+    case VEH_GCS_ARM_AUTO: arm_auto(v); break;
     case VEH_GCS_STOP:
         if ((s->mode == VEH_MODE_AUTO) && (mt_mission_stop(&v->mission) == MT_OK)) {
             veh_say(v, "gcs: mission stopped at #%u, holding position", v->mission.nav);
@@ -95,8 +93,7 @@ void veh_gcs_update(veh_t *v)
         }
         break;
     case VEH_GCS_NONE:
-    default:
-        break;
+    default: break;
     }
 }
 

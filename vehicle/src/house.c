@@ -23,7 +23,8 @@ void veh_housekeeping(veh_t *v)
         s->bat_ok = s->bat_volt > BAT_LOW_V;
         if (!s->bat_ok && s->armed && !s->bat_low_said) {
             s->bat_low_said = true;
-            veh_say(v, "vehicle: battery low (%s V)", vp_float((char[16]){0}, 16u, s->bat_volt, 2u));
+            veh_say(v, "vehicle: battery low (%s V)",
+                    vp_float((char[16]){0}, 16u, s->bat_volt, 2u));
         }
         if (s->armed) {
             uint8_t rec[12];

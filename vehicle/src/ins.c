@@ -53,8 +53,8 @@ void veh_imu_read(veh_t *v)
     /* inertial prediction: earth-frame acceleration = R f + g */
     vm_dcm(s->att, r);
     for (i = 0; i < 3; i++) {
-        a[i] = (r[i][0] * s->imu.accel[0]) + (r[i][1] * s->imu.accel[1]) +
-               (r[i][2] * s->imu.accel[2]);
+        a[i] =
+            (r[i][0] * s->imu.accel[0]) + (r[i][1] * s->imu.accel[1]) + (r[i][2] * s->imu.accel[2]);
     }
     a[2] += VM_GRAVITY;
     for (i = 0; i < 3; i++) {

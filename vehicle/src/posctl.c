@@ -227,8 +227,8 @@ static void pos_control(veh_t *v, float dt, float descent_max)
     s->pc_alt_i = vm_clamp(s->pc_alt_i + (CLIMB_I * e * dt), -4.0f, 4.0f);
     a_up = vm_clamp((CLIMB_P * e) + s->pc_alt_i, -6.0f, 8.0f);
     tilt = fmaxf(cosf(roll) * cosf(pitch), 0.5f);
-    s->thrust = vm_clamp((VEH_MASS * (VM_GRAVITY + a_up)) / tilt, 0.0f,
-                         0.95f * 4.0f * VEH_THRUST_MAX);
+    s->thrust =
+        vm_clamp((VEH_MASS * (VM_GRAVITY + a_up)) / tilt, 0.0f, 0.95f * 4.0f * VEH_THRUST_MAX);
     s->att_target[0] = roll;
     s->att_target[1] = pitch;
     s->att_target[2] = s->yaw_cmd;
@@ -377,9 +377,7 @@ static void auto_run(veh_t *v, float dt)
             n->done = true;
         }
         break;
-    case VEH_NAV_CIRCLE:
-        auto_circle(v, dt);
-        break;
+    case VEH_NAV_CIRCLE: auto_circle(v, dt); break;
     case VEH_NAV_LAND:
         if (n->phase == 0u) {
             leg_update(v, dt);
@@ -395,13 +393,9 @@ static void auto_run(veh_t *v, float dt)
             return;
         }
         break;
-    case VEH_NAV_RTL:
-        auto_rtl(v, dt);
-        return;
+    case VEH_NAV_RTL: auto_rtl(v, dt); return;
     case VEH_NAV_NONE:
-    default:
-        leg_update(v, dt);
-        break;
+    default: leg_update(v, dt); break;
     }
     pos_control(v, dt, DESCENT_MAX);
 }
@@ -475,8 +469,9 @@ void veh_nav_update(veh_t *v)
 {
     veh_state_t *s = &v->s;
     uint64_t now = veh_now(v);
-    float dt = (s->last_nav_us == 0u) ? 0.02f
-                                      : vm_clamp((float)(now - s->last_nav_us) * 1.0e-6f, 0.005f, 0.1f);
+    float dt = (s->last_nav_us == 0u)
+                   ? 0.02f
+                   : vm_clamp((float)(now - s->last_nav_us) * 1.0e-6f, 0.005f, 0.1f);
 
     s->last_nav_us = now;
     if (!s->armed) {
@@ -486,20 +481,14 @@ void veh_nav_update(veh_t *v)
     }
     yaw_update(v, dt);
     switch (s->mode) {
-    case VEH_MODE_AUTO:
-        auto_run(v, dt);
-        break;
+    case VEH_MODE_AUTO: auto_run(v, dt); break;
     case VEH_MODE_HOLD:
         leg_update(v, dt);
         pos_control(v, dt, DESCENT_MAX);
         break;
-    case VEH_MODE_LAND:
-        (void)land_run(v, s->land_pos, dt);
-        break;
+    case VEH_MODE_LAND: (void)land_run(v, s->land_pos, dt); break;
     case VEH_MODE_STANDBY:
-    default:
-        s->thrust = 0.0f;
-        break;
+    default: s->thrust = 0.0f; break;
     }
     /* spool up once the controller asks for more than the idle thrust */
     if (s->armed && !s->flying && (s->thrust > (0.3f * VEH_MASS * VM_GRAVITY)) &&

@@ -124,11 +124,11 @@ void veh_task_cost(uint32_t i, uint32_t *cost_min_us, uint32_t *cost_max_us);
 
 /** Where the vehicle is in its life. */
 typedef enum {
-    VEH_PHASE_BOOT = 0,     /**< disarmed, waiting for the arm command */
-    VEH_PHASE_FLYING = 1,   /**< armed */
-    VEH_PHASE_DONE = 2,     /**< landed and disarmed after the mission completed */
-    VEH_PHASE_ABORTED = 3,  /**< landed and disarmed without completing the mission */
-    VEH_PHASE_CRASHED = 4,  /**< hit the ground too hard (the deployment says so) */
+    VEH_PHASE_BOOT = 0,    /**< disarmed, waiting for the arm command */
+    VEH_PHASE_FLYING = 1,  /**< armed */
+    VEH_PHASE_DONE = 2,    /**< landed and disarmed after the mission completed */
+    VEH_PHASE_ABORTED = 3, /**< landed and disarmed without completing the mission */
+    VEH_PHASE_CRASHED = 4, /**< hit the ground too hard (the deployment says so) */
 } veh_phase_t;
 
 veh_phase_t veh_phase(void);
@@ -147,22 +147,22 @@ void veh_printf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /** Counters the summary and the tests use. */
 typedef struct {
-    uint32_t cmds_started;   /**< mission commands started (nav and do) */
-    uint32_t wps_reached;    /**< nav commands verified */
-    uint32_t completions;    /**< mission complete callbacks */
-    uint64_t armed_us;       /**< time of arming (0: never) */
-    uint64_t disarmed_us;    /**< time of disarming after flight (0: not yet) */
-    uint64_t baro_sent;      /**< samples the timer proc published */
-    uint64_t baro_received;  /**< samples the main loop took */
-    uint32_t baro_dropped;   /**< samples lost on a full ring (drop-oldest) */
-    uint32_t baro_bus_fail;  /**< timer-proc reads that could not get the bus */
-    uint64_t log_bytes;      /**< bytes the IO proc wrote to the sink */
-    uint64_t log_records;    /**< records written to the ring */
-    uint32_t log_dropped;    /**< records that did not fit in the ring */
-    uint32_t log_max_fill;   /**< highest ring fill seen by the writer */
-    uint64_t bus_transfers;  /**< bus transactions */
-    uint32_t bus_waits;      /**< bus takes that had to wait */
-    uint32_t bus_timeouts;   /**< bus takes that timed out */
+    uint32_t cmds_started;  /**< mission commands started (nav and do) */
+    uint32_t wps_reached;   /**< nav commands verified */
+    uint32_t completions;   /**< mission complete callbacks */
+    uint64_t armed_us;      /**< time of arming (0: never) */
+    uint64_t disarmed_us;   /**< time of disarming after flight (0: not yet) */
+    uint64_t baro_sent;     /**< samples the timer proc published */
+    uint64_t baro_received; /**< samples the main loop took */
+    uint32_t baro_dropped;  /**< samples lost on a full ring (drop-oldest) */
+    uint32_t baro_bus_fail; /**< timer-proc reads that could not get the bus */
+    uint64_t log_bytes;     /**< bytes the IO proc wrote to the sink */
+    uint64_t log_records;   /**< records written to the ring */
+    uint32_t log_dropped;   /**< records that did not fit in the ring */
+    uint32_t log_max_fill;  /**< highest ring fill seen by the writer */
+    uint64_t bus_transfers; /**< bus transactions */
+    uint32_t bus_waits;     /**< bus takes that had to wait */
+    uint32_t bus_timeouts;  /**< bus takes that timed out */
     uint64_t telem_packets;
     uint64_t telem_bytes;
 } veh_counters_t;

@@ -31,22 +31,22 @@
 
 /* ---- airframe (what the vehicle knows of itself) ----------------------------------------- */
 
-#define VEH_MASS 1.5f          /* kg */
-#define VEH_THRUST_MAX 7.5f    /* N per motor */
-#define VEH_ARM 0.1768f        /* m, motor offset along each body axis */
-#define VEH_YAW_K 0.016f       /* m, yaw torque per newton */
+#define VEH_MASS 1.5f       /* kg */
+#define VEH_THRUST_MAX 7.5f /* N per motor */
+#define VEH_ARM 0.1768f     /* m, motor offset along each body axis */
+#define VEH_YAW_K 0.016f    /* m, yaw torque per newton */
 #define VEH_IXX 0.015f
 #define VEH_IYY 0.015f
 #define VEH_IZZ 0.026f
-#define VEH_MOTOR_IDLE 0.06f   /* armed, on the ground */
+#define VEH_MOTOR_IDLE 0.06f /* armed, on the ground */
 
 /* ---- shared sensor bus ---------------------------------------------------------------- */
 
 typedef struct {
-    mt_sem_t sem;        /**< binary semaphore used as the bus lock (1 = free) */
-    uint32_t transfers;  /**< transactions done */
-    uint32_t waits;      /**< takes that found the bus busy */
-    uint32_t timeouts;   /**< takes that gave up */
+    mt_sem_t sem;       /**< binary semaphore used as the bus lock (1 = free) */
+    uint32_t transfers; /**< transactions done */
+    uint32_t waits;     /**< takes that found the bus busy */
+    uint32_t timeouts;  /**< takes that gave up */
 } veh_bus_t;
 
 /** Read n bytes of device register reg with the bus held (waits up to timeout_us for it).
@@ -67,8 +67,8 @@ typedef enum {
     VEH_NAV_NONE = 0,
     VEH_NAV_TAKEOFF,
     VEH_NAV_WAYPOINT,
-    VEH_NAV_LOITER,   /**< LOITER_TIME / LOITER_UNLIM: reach, then hold */
-    VEH_NAV_CIRCLE,   /**< LOITER_TURNS */
+    VEH_NAV_LOITER, /**< LOITER_TIME / LOITER_UNLIM: reach, then hold */
+    VEH_NAV_CIRCLE, /**< LOITER_TURNS */
     VEH_NAV_LAND,
     VEH_NAV_RTL,
 } veh_nav_kind_t;
@@ -76,17 +76,17 @@ typedef enum {
 /** The active nav command as the vehicle flies it. */
 typedef struct {
     veh_nav_kind_t kind;
-    uint16_t index;     /**< mission index */
-    uint16_t id;        /**< MAV_CMD */
-    float dest[3];      /**< NED destination (circle: centre) */
-    float radius;       /**< acceptance radius, m */
-    float hold_s;       /**< hold time after reaching (waypoint, loiter time); < 0: forever */
-    float turns;        /**< circle: turns to fly */
-    float circle_r;     /**< circle radius, m */
-    float circle_dir;   /**< +1 clockwise, -1 counter-clockwise */
-    float angle;        /**< circle: current angle about the centre */
-    float swept;        /**< circle: angle flown */
-    uint8_t phase;      /**< sub-state (RTL: climb, return, descend; circle: approach, circle) */
+    uint16_t index;   /**< mission index */
+    uint16_t id;      /**< MAV_CMD */
+    float dest[3];    /**< NED destination (circle: centre) */
+    float radius;     /**< acceptance radius, m */
+    float hold_s;     /**< hold time after reaching (waypoint, loiter time); < 0: forever */
+    float turns;      /**< circle: turns to fly */
+    float circle_r;   /**< circle radius, m */
+    float circle_dir; /**< +1 clockwise, -1 counter-clockwise */
+    float angle;      /**< circle: current angle about the centre */
+    float swept;      /**< circle: angle flown */
+    uint8_t phase;    /**< sub-state (RTL: climb, return, descend; circle: approach, circle) */
     bool reached;
     uint64_t reached_us;
     bool done;
@@ -97,7 +97,7 @@ typedef struct {
     uint16_t index;
     uint16_t id;
     uint64_t start_us;
-    float value;        /**< delay s, distance m, target yaw rad */
+    float value; /**< delay s, distance m, target yaw rad */
     bool active;
 } veh_docmd_t;
 
@@ -105,38 +105,38 @@ typedef struct {
     /* attitude estimate (ins.c) */
     veh_imu_sample_t imu;
     uint64_t last_imu_us;
-    float dt;               /**< seconds since the previous sample */
-    float att[3];           /**< roll, pitch, yaw */
+    float dt;     /**< seconds since the previous sample */
+    float att[3]; /**< roll, pitch, yaw */
     float rates[3];
     /* inertial navigation (ins.c, corrected by gps.c and baro.c) */
-    float pos[3];           /**< NED from home, m */
+    float pos[3]; /**< NED from home, m */
     float vel[3];
-    bool pos_ok;            /**< GPS has corrected the estimate */
+    bool pos_ok; /**< GPS has corrected the estimate */
     uint32_t gps_fixes;
     uint64_t gps_last_us;
     veh_gps_fix_t gps;
-    float baro_alt;         /**< altitude from the barometer, m above the boot pressure */
-    float baro_p0;          /**< ground pressure, Pa */
-    uint32_t baro_cal_n;    /**< samples in the ground calibration */
+    float baro_alt;      /**< altitude from the barometer, m above the boot pressure */
+    float baro_p0;       /**< ground pressure, Pa */
+    uint32_t baro_cal_n; /**< samples in the ground calibration */
     float baro_cal_sum;
     bool baro_ok;
     /* control targets (posctl.c -> attctl.c -> motors.c) */
-    float att_target[3];    /**< roll, pitch, yaw */
+    float att_target[3]; /**< roll, pitch, yaw */
     float rate_target[3];
     float rate_i[3];
     float rate_prev_err[3];
-    float thrust;           /**< N, total */
-    float torque[3];        /**< N m */
-    float motor[4];         /**< outputs 0..1 */
+    float thrust;    /**< N, total */
+    float torque[3]; /**< N m */
+    float motor[4];  /**< outputs 0..1 */
     /* position controller */
-    float pc_target[3];     /**< NED position target */
+    float pc_target[3]; /**< NED position target */
     float pc_vel_ff[3];
     float pc_vel_i[3];
     float pc_alt_i;
-    float yaw_cmd;          /**< yaw the vehicle is asked to face */
+    float yaw_cmd; /**< yaw the vehicle is asked to face */
     float yaw_goal;
-    float yaw_rate;         /**< rad/s slew of yaw_cmd */
-    bool yaw_fixed;         /**< CONDITION_YAW holds the yaw until the next nav command */
+    float yaw_rate; /**< rad/s slew of yaw_cmd */
+    bool yaw_fixed; /**< CONDITION_YAW holds the yaw until the next nav command */
     /* leg (carrot) */
     float leg_origin[3];
     float leg_dest[3];
@@ -144,13 +144,13 @@ typedef struct {
     float leg_s;
     float leg_v;
     bool leg_done;
-    float speed_xy;         /**< cruise speed, m/s */
+    float speed_xy; /**< cruise speed, m/s */
     uint64_t last_nav_us;
     /* modes */
     veh_mode_t mode;
     bool armed;
-    bool flying;            /**< took off since arming */
-    uint32_t landed_ticks;  /**< nav runs with the landing detector true */
+    bool flying;           /**< took off since arming */
+    uint32_t landed_ticks; /**< nav runs with the landing detector true */
     veh_navcmd_t nav;
     veh_docmd_t doc;
     float hold_pos[3];

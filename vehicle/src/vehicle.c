@@ -35,7 +35,7 @@ enum {
 
 /* Loop rate and timer load. */
 #define SCHED_LOOP(hz) VEH_LOOP_HZ = (hz),
-#define SCHED_TIMER(period, cmin, cmax)                                                            \
+#define SCHED_TIMER(period, cmin, cmax) \
     VEH_TIMER_PERIOD_US = (period), VEH_TIMER_COST_MIN = (cmin), VEH_TIMER_COST_MAX = (cmax),
 #define SCHED_FAST(name, prio, budget, cmin, cmax)
 #define SCHED_TASK(name, rate, budget, prio, cmin, cmax)
@@ -48,15 +48,21 @@ enum {
 #undef SCHED_FAST
 #undef SCHED_TASK
 
-/* Honest budgets: the worst-case cost plus one timer dispatch fits the budget. */
+/* Honest budgets: the worst-case cost plus the timer rounds that can pre-empt one run fit the
+ * budget. n rounds stretch a run of cost c to at most c + n * t_max, and need (n - 1) timer
+ * periods inside it, so n <= 1 + (c + t_max) / (period - t_max) (tools/sched_check.py). */
+#define VEH_ROUNDS_IN_RUN(c) \
+    (1 + (((c) + VEH_TIMER_COST_MAX) / (VEH_TIMER_PERIOD_US - VEH_TIMER_COST_MAX)))
+#define VEH_HONEST(cmin, cmax, budget) \
+    (((cmin) <= (cmax)) && (((cmax) + (VEH_TIMER_COST_MAX * VEH_ROUNDS_IN_RUN(cmax))) <= (budget)))
 #define SCHED_LOOP(hz)
 #define SCHED_TIMER(period, cmin, cmax)
-#define SCHED_FAST(name, prio, budget, cmin, cmax)                                                 \
-    _Static_assert(((cmin) <= (cmax)) && ((cmax) + VEH_TIMER_COST_MAX <= (budget)),                \
-                   "task " #name ": budget below its worst-case cost plus one timer dispatch");
-#define SCHED_TASK(name, rate, budget, prio, cmin, cmax)                                           \
-    _Static_assert(((cmin) <= (cmax)) && ((cmax) + VEH_TIMER_COST_MAX <= (budget)),                \
-                   "task " #name ": budget below its worst-case cost plus one timer dispatch");
+#define SCHED_FAST(name, prio, budget, cmin, cmax) \
+    _Static_assert(VEH_HONEST(cmin, cmax, budget), \
+                   "task " #name ": budget below its worst-case cost plus timer pre-emption");
+#define SCHED_TASK(name, rate, budget, prio, cmin, cmax) \
+    _Static_assert(VEH_HONEST(cmin, cmax, budget),       \
+                   "task " #name ": budget below its worst-case cost plus timer pre-emption");
 #include VEHICLE_TASKS_DEF
 #undef SCHED_LOOP
 #undef SCHED_TIMER
@@ -67,14 +73,13 @@ enum {
 static void task_work(uint32_t i);
 #define SCHED_LOOP(hz)
 #define SCHED_TIMER(period, cmin, cmax)
-#define SCHED_FAST(name, prio, budget, cmin, cmax)                                                 \
-    static void vt_##name(void *arg)                                                               \
-    {                                                                                              \
-        veh_##name((veh_t *)arg);                                                                  \
-        task_work(VT_##name);                                                                      \
+#define SCHED_FAST(name, prio, budget, cmin, cmax) \
+    static void vt_##name(void *arg)               \
+    {                                              \
+        veh_##name((veh_t *)arg);                  \
+        task_work(VT_##name);                      \
     }
-#define SCHED_TASK(name, rate, budget, prio, cmin, cmax)                                           \
-    SCHED_FAST(name, prio, budget, cmin, cmax)
+#define SCHED_TASK(name, rate, budget, prio, cmin, cmax) SCHED_FAST(name, prio, budget, cmin, cmax)
 #include VEHICLE_TASKS_DEF
 #undef SCHED_LOOP
 #undef SCHED_TIMER
@@ -84,7 +89,7 @@ static void task_work(uint32_t i);
 #define SCHED_LOOP(hz)
 #define SCHED_TIMER(period, cmin, cmax)
 #define SCHED_FAST(name, prio, budget, cmin, cmax) {#name, vt_##name, &g_veh, 0u, (budget), (prio)},
-#define SCHED_TASK(name, rate, budget, prio, cmin, cmax)                                           \
+#define SCHED_TASK(name, rate, budget, prio, cmin, cmax) \
     {#name, vt_##name, &g_veh, MT_HZ(rate), (budget), (prio)},
 static const mt_task_t g_tasks[VT_COUNT] = {
 #include VEHICLE_TASKS_DEF
@@ -374,13 +379,13 @@ void veh_summary(const char *stop_reason)
     veh_printf("load average: %s%% (last 32 loops), %s%% over the run\n",
                vp_fix(a, sizeof(a), (int64_t)lr.load_permille, 10, 1u),
                vp_fix(b, sizeof(b),
-                      (lr.ticks == 0u) ? 0
-                                       : (int64_t)((busy * 1000u) /
-                                                   (lr.ticks * (uint64_t)v->sched.period_us)),
+                      (lr.ticks == 0u)
+                          ? 0
+                          : (int64_t)((busy * 1000u) / (lr.ticks * (uint64_t)v->sched.period_us)),
                       10, 1u));
     veh_printf("overruns: %llu, slips: %llu, budget skips: %llu, not achieved: %llu\n",
-               (unsigned long long)overruns, (unsigned long long)slips,
-               (unsigned long long)skips, (unsigned long long)nach);
+               (unsigned long long)overruns, (unsigned long long)slips, (unsigned long long)skips,
+               (unsigned long long)nach);
     veh_printf("timer procs: %llu dispatches, %u periods missed; barometer: %llu samples "
                "published, %llu taken, %u dropped, %u queued, %u failed reads\n",
                (unsigned long long)v->timer_procs.dispatches,
@@ -393,8 +398,8 @@ void veh_summary(const char *stop_reason)
     veh_printf("log: %llu records, %llu bytes to the sink, %u dropped, ring peak %u of %u "
                "bytes; io procs: %llu dispatches\n",
                (unsigned long long)c->log_records, (unsigned long long)c->log_bytes,
-               (unsigned)c->log_dropped, (unsigned)c->log_max_fill,
-               (unsigned)sizeof(v->log_store), (unsigned long long)v->io_procs.dispatches);
+               (unsigned)c->log_dropped, (unsigned)c->log_max_fill, (unsigned)sizeof(v->log_store),
+               (unsigned long long)v->io_procs.dispatches);
     veh_printf("telemetry: %llu packets, %llu bytes\n", (unsigned long long)c->telem_packets,
                (unsigned long long)c->telem_bytes);
 }

@@ -163,9 +163,7 @@ size_t vp_vformat(vp_sink_t sink, void *ctx, const char *fmt, va_list ap)
             field(&o, s, len, width, left, false, false);
             break;
         }
-        case '%':
-            out(&o, "%", 1u);
-            break;
+        case '%': out(&o, "%", 1u); break;
         default:
             /* unknown conversion: print it as written */
             out(&o, p + (q - p) - 1, (*q != '\0') ? 2u : 1u);

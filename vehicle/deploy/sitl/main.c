@@ -44,11 +44,11 @@
 #include "wpl.h"
 
 #define SIM_START_US 1000000u
-#define ARM_FIRST_US 1000000u   /* first arm request after boot */
+#define ARM_FIRST_US 1000000u /* first arm request after boot */
 #define ARM_RETRY_US 500000u
 #define ARM_TIMEOUT_US 15000000u
 #define MAX_EVENTS 16
-#define SETTLE_US 1000000u      /* run on after the end for the log to drain */
+#define SETTLE_US 1000000u /* run on after the end for the log to drain */
 
 typedef struct {
     uint64_t t_us;
@@ -620,9 +620,8 @@ int main(int argc, char **argv)
         veh_printf("world: max altitude %s m, max ground speed %s m/s, touchdowns %u, bus "
                    "collisions %u, servo writes %u\n",
                    vp_float(a, sizeof(a), g.world.max_alt, 1u),
-                   vp_float(b, sizeof(b), g.world.max_speed, 1u),
-                   (unsigned)g.world.sim.touchdowns, (unsigned)g.world.collisions,
-                   (unsigned)g.world.servo_writes);
+                   vp_float(b, sizeof(b), g.world.max_speed, 1u), (unsigned)g.world.sim.touchdowns,
+                   (unsigned)g.world.collisions, (unsigned)g.world.servo_writes);
     }
     if (g.overrun_task >= 0) {
         veh_printf("fault injection: %llu runs of %s overran by %u us\n",
@@ -642,8 +641,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "sitl: %.1f s %s in %.2f s of wall time (%.0fx real time)\n", simulated,
                 g.sim ? "simulated" : "flown", w, (w > 0.0) ? simulated / w : 0.0);
     }
-    rc = ((veh_phase() == VEH_PHASE_DONE) || ((max_ticks != 0u) && (veh_sched()->tick >= max_ticks)))
-             ? 0
-             : 1;
+    rc =
+        ((veh_phase() == VEH_PHASE_DONE) || ((max_ticks != 0u) && (veh_sched()->tick >= max_ticks)))
+            ? 0
+            : 1;
     return rc;
 }
