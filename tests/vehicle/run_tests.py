@@ -309,17 +309,27 @@ def t_sched_overloaded(S):
 
 def t_sched_rejects(S):
     base = open(os.path.join(ROOT, "vehicle", "tasks.def")).read()
-    cases = [("SCHED_TASK(gps_update, 10, 150, 5, 20, 125)", "SCHED_TASK(gps_update, 10, 150, 5, 20, 140)",
-              "dishonest budget"),
-             ("SCHED_TASK(status_line, 1, 400, 11, 150, 375)", "SCHED_TASK(status_line, 1, 2600, 11, 150, 375)",
-              "MT_E_TASK_BUDGET"),
-             ("SCHED_TASK(housekeeping, 3, 250, 10, 80, 225)", "SCHED_TASK(housekeeping, 3, 250, 2, 80, 225)",
-              "MT_E_TASK_RATE"),
-             ("SCHED_LOOP(400)", "SCHED_LOOP(400)\nint x;", "not a table entry")]
-    for old, new, what in cases:
-        check(old in base, "test case out of date: %s" % old)
+
+    def edit(name, field, value):
+        """The table with one field (0-based, after the name) of task `name` replaced."""
+        m = re.search(r"SCHED_TASK\(%s,([^)]*)\)" % name, base)
+        check(m is not None, "no task %s in vehicle/tasks.def" % name)
+        f = [x.strip() for x in m.group(1).split(",")]
+        f[field] = str(value(f))
+        return base.replace(m.group(0), "SCHED_TASK(%s, %s)" % (name, ", ".join(f)))
+
+    cases = [(edit("gps_update", 4, lambda f: int(f[1])), "dishonest budget"),  # cost_max = budget
+             (edit("status_line", 1, lambda f: 2600), "MT_E_TASK_BUDGET"),    # budget > period
+             (edit("housekeeping", 2, lambda f: 2), "MT_E_TASK_RATE"),        # a fast priority
+             (edit("log_write", 2, lambda f: 1 + int(
+                 re.search(r"SCHED_TASK\(housekeeping,[^,]*,[^,]*,\s*(\d+)", base).group(1))),
+              "MT_E_TASK_ORDER"),                                              # priorities out of order
+             (base.replace("SCHED_LOOP(400)", "SCHED_LOOP(400)\nint x;"), "not a table entry"),
+             (base.replace("SCHED_LOOP(400)", "SCHED_LOOP(40)"), "MT_E_LOOP_RATE")]
+    for text, what in cases:
+        check(text != base, "test case did not change the table: %s" % what)
         p = os.path.join(S.tmp, "bad.def")
-        open(p, "w").write(base.replace(old, new))
+        open(p, "w").write(text)
         rc, out, res, secs = S.sched(p)
         check(rc == 2 and what in out, "%s: rc %d %s" % (what, rc, out))
 

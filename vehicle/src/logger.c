@@ -12,6 +12,8 @@
  * time in us (uint64). A record that does not fit in the ring is dropped
  * whole and counted (never a partial record).
  */
+#include <string.h>
+
 #include "veh_int.h"
 
 #define LOG_MAX_PAYLOAD 64u
@@ -47,8 +49,18 @@ void veh_log_record(veh_t *v, uint8_t type, const uint8_t *payload, uint8_t len)
         sum = (uint8_t)(sum + payload[i]);
     }
     rec[4u + len] = sum;
-    /* only this (producer) side can shrink the space: the whole record fits */
-    (void)mt_bring_write(&v->log, rec, n);
+    /* only this (producer) side can shrink the space: the whole record fits; zero-copy
+     * (reserve, copy into the ring's segments, commit) */
+    {
+        mt_iovec_t vec[2];
+        uint32_t segs = mt_bring_reserve(&v->log, vec, n);
+        uint32_t off = 0u;
+        for (i = 0u; i < segs; i++) {
+            memcpy(vec[i].base, &rec[off], vec[i].len);
+            off += vec[i].len;
+        }
+        (void)mt_bring_commit(&v->log, off);
+    }
     v->c.log_records++;
     fill = (uint32_t)sizeof(v->log_store) - mt_bring_space(&v->log);
     if (fill > v->c.log_max_fill) {

@@ -128,33 +128,84 @@ uint64_t veh_now(const veh_t *v)
     return mt_port_now_us();
 }
 
-static void console_sink(void *ctx, const char *s, size_t n)
+/* Console output is formatted into a line buffer and handed to the platform in one piece
+ * (a console call per fragment costs a ring operation each on the firmware). */
+typedef struct {
+    const veh_platform_t *p;
+    size_t n;
+    char buf[192];
+} veh_line_t;
+
+static void line_flush(veh_line_t *l)
 {
-    const veh_platform_t *p = (const veh_platform_t *)ctx;
-    p->console(p->ctx, s, n);
+    if (l->n > 0u) {
+        l->p->console(l->p->ctx, l->buf, l->n);
+        l->n = 0u;
+    }
+}
+
+static void line_sink(void *ctx, const char *s, size_t n)
+{
+    veh_line_t *l = (veh_line_t *)ctx;
+    size_t i;
+
+    for (i = 0u; i < n; i++) {
+        if (l->n == sizeof(l->buf)) {
+            line_flush(l);
+        }
+        l->buf[l->n] = s[i];
+        l->n++;
+    }
 }
 
 void veh_printf(const char *fmt, ...)
 {
+    veh_line_t l;
     va_list ap;
+
+    l.p = g_veh.plat;
+    l.n = 0u;
     va_start(ap, fmt);
-    (void)vp_vformat(console_sink, (void *)(uintptr_t)g_veh.plat, fmt, ap);
+    (void)vp_vformat(line_sink, &l, fmt, ap);
     va_end(ap);
+    line_flush(&l);
 }
 
 void veh_say(veh_t *v, const char *fmt, ...)
 {
+    veh_line_t l;
     char t[24];
     uint64_t now = veh_now(v);
     va_list ap;
 
+    l.p = v->plat;
+    l.n = 0u;
     (void)vp_fix(t, sizeof(t), (int64_t)((now >= v->boot_us) ? (now - v->boot_us) : 0u), 1000000,
                  3u);
-    veh_printf("[%8s] ", t);
+    line_sink(&l, "[", 1u);
+    {
+        size_t k = 0u;
+        while (t[k] != '\0') {
+            k++;
+        }
+        while (k < 8u) {
+            line_sink(&l, " ", 1u);
+            k++;
+        }
+    }
+    {
+        size_t k = 0u;
+        while (t[k] != '\0') {
+            k++;
+        }
+        line_sink(&l, t, k);
+    }
+    line_sink(&l, "] ", 2u);
     va_start(ap, fmt);
-    (void)vp_vformat(console_sink, (void *)(uintptr_t)v->plat, fmt, ap);
+    (void)vp_vformat(line_sink, &l, fmt, ap);
     va_end(ap);
-    veh_printf("\n");
+    line_sink(&l, "\n", 1u);
+    line_flush(&l);
 }
 
 /* ---- set-up and loop ----------------------------------------------------------------------- */
@@ -330,11 +381,11 @@ void veh_summary(const char *stop_reason)
     veh_printf("run ended: %s\n", stop_reason);
     if (c->completions > 0u) {
         veh_printf("mission: COMPLETE (%u commands started, %u nav commands completed)\n",
-                   c->cmds_started, c->wps_reached);
+                   (unsigned)c->cmds_started, (unsigned)c->wps_reached);
     } else {
         veh_printf("mission: NOT COMPLETE: %s (%u commands started, %u nav commands "
                    "completed)\n",
-                   veh_incomplete_reason(), c->cmds_started, c->wps_reached);
+                   veh_incomplete_reason(), (unsigned)c->cmds_started, (unsigned)c->wps_reached);
     }
     if (c->armed_us != 0u) {
         uint64_t end = (c->disarmed_us != 0u) ? c->disarmed_us : mt_port_now_us();

@@ -23,23 +23,39 @@ static void out(vp_out_t *o, const char *s, size_t n)
 
 static void pad(vp_out_t *o, char c, size_t n)
 {
+    char run[16];
+    size_t i;
+
+    for (i = 0u; i < sizeof(run); i++) {
+        run[i] = c;
+    }
     while (n > 0u) {
-        out(o, &c, 1u);
-        n--;
+        size_t k = (n < sizeof(run)) ? n : sizeof(run);
+        out(o, run, k);
+        n -= k;
     }
 }
 
-/* Digits of v in base 10 or 16 into the end of buf; returns the start. */
+/* Digits of v in base 10 or 16 into the end of buf; returns the start. 32-bit arithmetic
+ * while the value fits (a 64-bit division is a library call on 32-bit targets). */
 static char *digits(char *end, uint64_t v, unsigned base, bool upper)
 {
     const char *d = upper ? "0123456789ABCDEF" : "0123456789abcdef";
     char *p = end;
 
-    do {
+    while (v > 0xFFFFFFFFu) {
         p--;
         *p = d[v % base];
         v /= base;
-    } while (v != 0u);
+    }
+    {
+        uint32_t w = (uint32_t)v;
+        do {
+            p--;
+            *p = d[w % base];
+            w /= base;
+        } while (w != 0u);
+    }
     return p;
 }
 
@@ -212,36 +228,55 @@ size_t vp_snprintf(char *buf, size_t cap, const char *fmt, ...)
 
 const char *vp_fix(char *buf, size_t cap, int64_t v, int64_t scale, unsigned decimals)
 {
-    uint64_t p10 = 1u;
+    uint32_t p10 = 1u;
     uint64_t m;
-    uint64_t r;
-    char frac[24];
+    uint64_t q;
+    uint64_t rm;
+    uint64_t f;
+    char frac[12];
     unsigned i;
     bool neg = v < 0;
 
-    if (decimals > 18u) {
-        decimals = 18u;
+    if (decimals > 9u) {
+        decimals = 9u;
     }
     for (i = 0u; i < decimals; i++) {
         p10 *= 10u;
     }
     m = neg ? ((uint64_t)(-(v + 1)) + 1u) : (uint64_t)v;
-    /* round(m * 10^decimals / scale), half away from zero */
-    r = ((m * p10) + ((uint64_t)scale / 2u)) / (uint64_t)scale;
-    neg = neg && (r != 0u);
+    /* integer part and remainder; 32-bit arithmetic when it fits (64-bit division is a
+     * library call on 32-bit targets) */
+    if ((m <= 0xFFFFFFFFu) && ((uint64_t)scale <= 0xFFFFFFFFu)) {
+        q = (uint32_t)m / (uint32_t)scale;
+        rm = (uint32_t)m % (uint32_t)scale;
+    } else {
+        q = m / (uint64_t)scale;
+        rm = m % (uint64_t)scale;
+    }
+    /* the fraction, rounded half away from zero (rm < scale) */
+    if (((uint64_t)scale <= 0x7FFFFFFFu) && (rm <= (0xFFFFFFFFu / 2u / p10))) {
+        f = (((uint32_t)rm * p10) + ((uint32_t)scale / 2u)) / (uint32_t)scale;
+    } else {
+        f = ((rm * p10) + ((uint64_t)scale / 2u)) / (uint64_t)scale;
+    }
+    if (f >= p10) {
+        f -= p10;
+        q++;
+    }
+    neg = neg && ((q != 0u) || (f != 0u));
     if (decimals == 0u) {
-        (void)vp_snprintf(buf, cap, "%s%llu", neg ? "-" : "", (unsigned long long)r);
+        (void)vp_snprintf(buf, cap, "%s%llu", neg ? "-" : "", (unsigned long long)q);
         return buf;
     }
     {
-        uint64_t f = r % p10;
+        uint32_t fr = (uint32_t)f;
         for (i = 0u; i < decimals; i++) {
-            frac[decimals - 1u - i] = (char)('0' + (char)(f % 10u));
-            f /= 10u;
+            frac[decimals - 1u - i] = (char)('0' + (char)(fr % 10u));
+            fr /= 10u;
         }
         frac[decimals] = '\0';
     }
-    (void)vp_snprintf(buf, cap, "%s%llu.%s", neg ? "-" : "", (unsigned long long)(r / p10), frac);
+    (void)vp_snprintf(buf, cap, "%s%llu.%s", neg ? "-" : "", (unsigned long long)q, frac);
     return buf;
 }
 
