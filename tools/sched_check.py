@@ -38,7 +38,10 @@ Analyses:
      before it in the scan (later ones run after it), so each task is decided on its
      prefix of the table:
      a. Z3: can it be skipped at all, whatever the earlier tasks' due states? No: it
-        never misses a release (lateness 0).
+        never misses a release (lateness 0). Else: can it be skipped n ticks in a row
+        (n = 2..4, the ticks chained exactly, from any state)? No, and n <= interval:
+        it is at most n - 1 ticks late and never misses (a miss takes `interval`
+        skips in a row).
      b. Otherwise every reachable state of the prefix from start-up is enumerated
         (for each task the ticks since its last run, capped at 4 intervals: sched.c only
         compares it with 1, 2 and 4 intervals), each tick's outcomes decided by Z3
@@ -81,6 +84,7 @@ MAX_TASKS = 64
 FAST_PRIO_LIMIT = 3
 SLOWDOWN = 4
 EXTRA_STEP, EXTRA_DECAY, EXTRA_MAX, CLEAN_LOOPS = 100, 50, 5000, 50
+MAX_SKIP_RUN = 4  # longest run of consecutive skips the chained check tries
 
 
 class TableError(Exception):
@@ -98,6 +102,7 @@ class Table:
     def __init__(self):
         self.loop_hz = None
         self.timer = None  # (period, cmin, cmax)
+        self.latency = 0   # the scan can start up to this long after the sample
         self.tasks = []
         self.path = ""
 
@@ -121,6 +126,7 @@ def parse(path):
     ident = r"\s*([A-Za-z_][A-Za-z0-9_]*)\s*"
     pats = {
         "SCHED_LOOP": re.compile(r"^SCHED_LOOP\(" + num + r"\)$"),
+        "SCHED_LATENCY": re.compile(r"^SCHED_LATENCY\(" + num + r"\)$"),
         "SCHED_TIMER": re.compile(r"^SCHED_TIMER\(" + num + "," + num + "," + num + r"\)$"),
         "SCHED_FAST": re.compile(r"^SCHED_FAST\(" + ident + "," + num + "," + num + "," + num + "," + num + r"\)$"),
         "SCHED_TASK": re.compile(r"^SCHED_TASK\(" + ident + "," + num + "," + num + "," + num + "," + num + "," + num + r"\)$"),
@@ -138,6 +144,8 @@ def parse(path):
             if t.loop_hz is not None:
                 raise TableError("%s:%d: second SCHED_LOOP" % (path, lineno))
             t.loop_hz = int(g[0])
+        elif kind == "SCHED_LATENCY":
+            t.latency = int(g[0])
         elif kind == "SCHED_TIMER":
             if t.timer is not None:
                 raise TableError("%s:%d: second SCHED_TIMER" % (path, lineno))
@@ -178,6 +186,8 @@ def validate(t):
             raise TableError("MT_E_TASK_ORDER: %s: priority %d after %d" % (where, k.prio, t.tasks[i - 1].prio))
         k.interval = 1 if k.prio < FAST_PRIO_LIMIT else max(1, (t.loop_hz * 1000) // rate_mhz)
     tp, tmin, tmax = t.timer
+    if not 0 <= t.latency < t.period:
+        raise TableError("latency %d us outside [0, period)" % t.latency)
     if not (tp > 0 and 0 <= tmin <= tmax and 2 * tmax < tp):
         raise TableError("timer: period %d us, cost %d..%d us (need 0 <= min <= max < period / 2)" % t.timer)
     for i, k in enumerate(t.tasks):
@@ -215,7 +225,7 @@ class TickModel:
         # each run is stretched by at most ceil(run / (tp - tmax)) + 1 timer rounds.
         fast = sum(k.cmax for k in table.tasks if k.fast)
         longest = max([k.cmax for k in table.tasks if not k.fast] + [0])
-        span = tmax + max(fast, table.period + max_extra) + longest
+        span = table.latency + tmax + max(fast, table.period + max_extra) + longest
         bound = span + tmax * (span // (tp - tmax) + 2)
         self.rounds = bound // tp + 2  # rounds that can start inside a tick, with margin
         self.vars = {}
@@ -229,7 +239,9 @@ class TickModel:
         nm = "%s_%s" % (self.name, tick)
         terms = {"run": [], "skip": [], "exec": [], "avail": [], "wend": None}
         w0 = z3.Int("w0_" + nm)
-        phase = z3.Int("phase_" + nm)          # first timer round at or after the sample
+        lat = z3.Int("lat_" + nm)              # wake-up latency and work in the sample wait
+        s.add(lat >= 0, lat <= t.latency)
+        phase = z3.Int("phase_" + nm)          # first timer round at or after the wake-up
         carry_c = z3.Int("carry_" + nm)        # cost of the round before the sample
         s.add(phase >= 0, phase < tp, carry_c >= tmin, carry_c <= tmax)
         rc = []
@@ -237,9 +249,10 @@ class TickModel:
             c = z3.Int("round%d_%s" % (m, nm))
             s.add(c >= tmin, c <= tmax)
             rc.append(c)
-        d = [phase + m * tp for m in range(self.rounds)]
-        # a round that started before the sample and still runs delays the scan
-        s.add(w0 == z3.If(phase - tp + carry_c > 0, phase - tp + carry_c, 0))
+        d = [lat + phase + m * tp for m in range(self.rounds)]
+        # the scan starts after the latency, later still if a timer round that started
+        # before then is still running
+        s.add(w0 == lat + z3.If(phase - tp + carry_c > 0, phase - tp + carry_c, 0))
         terms["phase"] = phase
         ta = z3.Int("ta_" + nm)
         s.add(ta == z3.If(w0 >= P, 0, P - w0) + avail_extra)
@@ -362,7 +375,7 @@ def wall_bound(table, work):
     the scan starts at most one timer round late, and the rounds that start in [0, W)
     number at most W / tp + 1, so W <= 2 tmax + work + tmax W / tp."""
     tp, _, tmax = table.timer
-    return ((2 * tmax + work) * tp + (tp - tmax) - 1) // (tp - tmax)
+    return table.latency + ((2 * tmax + work) * tp + (tp - tmax) - 1) // (tp - tmax)
 
 
 def all_fit(table, due_mask, extra):
@@ -382,6 +395,7 @@ def prefix(table, n):
     """The table's first n tasks (same loop and timer)."""
     p = Table()
     p.loop_hz, p.timer, p.path, p.tasks = table.loop_hz, table.timer, table.path, table.tasks[:n]
+    p.latency = table.latency
     return p
 
 
@@ -393,7 +407,8 @@ class Oracle:
     def __init__(self, table, deadline_s):
         self.t = table
         self.s = z3.Solver()
-        self.s.set("timeout", int(deadline_s * 1000))
+        self.timeout_ms = int(deadline_s * 1000)
+        self.s.set("timeout", self.timeout_ms)
         self.extra = z3.Int("extra")
         self.due = [None if k.fast else z3.Bool("due%d" % i) for i, k in enumerate(table.tasks)]
         self.s.add(self.extra >= 0, self.extra <= EXTRA_MAX)
@@ -418,6 +433,31 @@ class Oracle:
         row = tick_row(self.t, s.model(), self.terms, 0) if self.check() else None
         s.pop()
         return row
+
+    def can_skip_run(self, i, k):
+        """Can task i be skipped in k consecutive ticks, from any state (every task's ticks
+        since its last run arbitrary) of the prefix? The k ticks are chained exactly
+        (a task that runs has waited 1 tick at the next one). Returns a bool."""
+        t = self.t
+        s = z3.Solver()
+        s.set("timeout", self.timeout_ms)
+        gaps = []
+        for j, x in enumerate(t.tasks):
+            g = z3.Int("g%d" % j)
+            s.add(g >= 1)
+            gaps.append(g)
+        model = TickModel(t, "r", 0)
+        for tick in range(k):
+            cur = list(gaps)
+            terms = model.build(s, tick, lambda j, cur=cur: cur[j] >= t.tasks[j].interval, 0)
+            s.add(terms["skip"][i])
+            gaps = [z3.If(terms["run"][j], 1, cur[j] + 1) if not x.fast else cur[j]
+                    for j, x in enumerate(t.tasks)]
+        self.queries += 1
+        r = s.check()
+        if r == z3.unknown:
+            raise TableError("Z3 gave up on %d ticks of skips (%s)" % (k, s.reason_unknown()))
+        return r == z3.sat
 
     def outcomes(self, due_mask):
         """[(run_mask, example_row)] for the due set (bit i: task i due), extra time 0."""
@@ -578,6 +618,16 @@ def analyse(t, args, out):
         if oracle.can_skip(i) is None:
             rows[i] = ("never", 0, False, None, "meets its rate: never skipped (Z3, any due state)")
             continue
+        # skipped k ticks in a row from any state? A miss needs `interval` of them.
+        bound = None
+        for run in range(2, min(k.interval, MAX_SKIP_RUN) + 1):
+            if not oracle.can_skip_run(i, run):
+                bound = run - 1
+                break
+        if bound is not None:
+            rows[i] = ("never", bound, False, None, "meets its rate: never skipped %d ticks in a row "
+                       "(Z3, any state), so at most %d tick%s late" % (bound + 1, bound, "" if bound == 1 else "s"))
+            continue
         try:
             ex = Explorer(pre, oracle, args.max_states)
         except TableError as e:
@@ -635,8 +685,9 @@ def main(argv):
     tp, tmin, tmax = t.timer
     nfast = sum(1 for k in t.tasks if k.fast)
     print("sched-check: %s (Z3 %s)" % (t.path, z3.get_version_string()))
-    print("loop %d Hz (period %d us), %d tasks (%d fast), timer procs every %d us taking %d..%d us"
-          % (t.loop_hz, P, len(t.tasks), nfast, tp, tmin, tmax))
+    print("loop %d Hz (period %d us), %d tasks (%d fast), timer procs every %d us taking %d..%d us, "
+          "scan starts up to %d us after the sample" % (t.loop_hz, P, len(t.tasks), nfast, tp, tmin, tmax,
+                                                       t.latency))
     result = {"table": t.path, "loop_hz": t.loop_hz, "period_us": P, "tasks": []}
     try:
         al = aligned_check(t, args.timeout)
@@ -670,11 +721,14 @@ def main(argv):
                     "the fast loop alone can run past the period: samples are lost")
         else:
             verdict, late, unb, by, text = rows[i]
-        lat = "unbounded" if unb else ("?" if late is None else "%d" % late)
+        upper = False
+        upper = "at most" in text
+        lat = "unbounded" if unb else ("?" if late is None else ("<=%d" if upper else "%d") % late)
         print("%-16s %7s %5d %6d %9s  %s" % (k.name, "fast" if k.fast else str(k.rate_hz), k.interval,
                                             k.budget, lat, text))
         result["tasks"].append({"name": k.name, "interval": k.interval, "budget": k.budget, "miss": verdict,
-                                "lateness_ticks": late, "lateness_unbounded": unb, "must_by_tick": by})
+                                "lateness_ticks": late, "lateness_is_bound": upper, "lateness_unbounded": unb,
+                                "must_by_tick": by})
     if witness is not None:
         name, first, sched = witness
         print("counterexample: an execution in which %s falls two releases behind at tick %d "

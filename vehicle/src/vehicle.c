@@ -21,6 +21,7 @@ static veh_t g_veh;
 
 /* Task indices, in table order. */
 #define SCHED_LOOP(hz)
+#define SCHED_LATENCY(us)
 #define SCHED_TIMER(period, cmin, cmax)
 #define SCHED_FAST(name, prio, budget, cmin, cmax) VT_##name,
 #define SCHED_TASK(name, rate, budget, prio, cmin, cmax) VT_##name,
@@ -29,12 +30,14 @@ enum {
     VT_COUNT
 };
 #undef SCHED_LOOP
+#undef SCHED_LATENCY
 #undef SCHED_TIMER
 #undef SCHED_FAST
 #undef SCHED_TASK
 
 /* Loop rate and timer load. */
 #define SCHED_LOOP(hz) VEH_LOOP_HZ = (hz),
+#define SCHED_LATENCY(us) VEH_LATENCY_US = (us),
 #define SCHED_TIMER(period, cmin, cmax) \
     VEH_TIMER_PERIOD_US = (period), VEH_TIMER_COST_MIN = (cmin), VEH_TIMER_COST_MAX = (cmax),
 #define SCHED_FAST(name, prio, budget, cmin, cmax)
@@ -44,6 +47,7 @@ enum {
     VEH_SPEC_END
 };
 #undef SCHED_LOOP
+#undef SCHED_LATENCY
 #undef SCHED_TIMER
 #undef SCHED_FAST
 #undef SCHED_TASK
@@ -56,6 +60,7 @@ enum {
 #define VEH_HONEST(cmin, cmax, budget) \
     (((cmin) <= (cmax)) && (((cmax) + (VEH_TIMER_COST_MAX * VEH_ROUNDS_IN_RUN(cmax))) <= (budget)))
 #define SCHED_LOOP(hz)
+#define SCHED_LATENCY(us)
 #define SCHED_TIMER(period, cmin, cmax)
 #define SCHED_FAST(name, prio, budget, cmin, cmax) \
     _Static_assert(VEH_HONEST(cmin, cmax, budget), \
@@ -65,6 +70,7 @@ enum {
                    "task " #name ": budget below its worst-case cost plus timer pre-emption");
 #include VEHICLE_TASKS_DEF
 #undef SCHED_LOOP
+#undef SCHED_LATENCY
 #undef SCHED_TIMER
 #undef SCHED_FAST
 #undef SCHED_TASK
@@ -72,6 +78,7 @@ enum {
 /* Task bodies: the component's work, then the simulated execution time (SITL). */
 static void task_work(uint32_t i);
 #define SCHED_LOOP(hz)
+#define SCHED_LATENCY(us)
 #define SCHED_TIMER(period, cmin, cmax)
 #define SCHED_FAST(name, prio, budget, cmin, cmax) \
     static void vt_##name(void *arg)               \
@@ -82,11 +89,13 @@ static void task_work(uint32_t i);
 #define SCHED_TASK(name, rate, budget, prio, cmin, cmax) SCHED_FAST(name, prio, budget, cmin, cmax)
 #include VEHICLE_TASKS_DEF
 #undef SCHED_LOOP
+#undef SCHED_LATENCY
 #undef SCHED_TIMER
 #undef SCHED_FAST
 #undef SCHED_TASK
 
 #define SCHED_LOOP(hz)
+#define SCHED_LATENCY(us)
 #define SCHED_TIMER(period, cmin, cmax)
 #define SCHED_FAST(name, prio, budget, cmin, cmax) {#name, vt_##name, &g_veh, 0u, (budget), (prio)},
 #define SCHED_TASK(name, rate, budget, prio, cmin, cmax) \
@@ -108,6 +117,7 @@ static const veh_cost_t g_cost[VT_COUNT] = {
 #include VEHICLE_TASKS_DEF
 };
 #undef SCHED_LOOP
+#undef SCHED_LATENCY
 #undef SCHED_TIMER
 #undef SCHED_FAST
 #undef SCHED_TASK

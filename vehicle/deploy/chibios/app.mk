@@ -9,7 +9,9 @@ VEH_DIR        := $(ROOTDIR)/vehicle
 VEH_FW_CSRC    := $(wildcard $(VEH_DIR)/src/*.c) $(wildcard $(VEH_DIR)/sim/*.c) \
                   $(VEH_DIR)/deploy/builtin_mission.c
 APP_EXTRA_CSRC  := $(MT_KERNEL_CSRC) $(MT_PORT_CSRC) $(VEH_FW_CSRC)
-APP_EXTRA_DEFS  := $(MT_DEFS)
+# 2 kHz RT tick: the 400 Hz samples (2500 us) fall on tick edges, so the main loop wakes
+# on time (with 1 kHz every other sample would wake 500 us late).
+APP_EXTRA_DEFS  := $(MT_DEFS) -DCH_CFG_ST_FREQUENCY=2000
 APP_EXTRA_INC   := $(MT_INC) $(VEH_DIR) $(VEH_DIR)/src $(VEH_DIR)/sim $(VEH_DIR)/deploy
 APP_STRICT_CSRC := $(MT_STRICT_CSRC) $(VEH_FW_CSRC) $(APPDIR)/main.c
 # float maths

@@ -32,6 +32,14 @@
 #include "veh.h"
 #include "vprint.h"
 
+/* Seeded failure (make ... FAIL=1): the mission gets a jump to a command that does not
+ * exist; the sequencer rejects it, the vehicle never arms, the run must exit non-zero. */
+#if defined(FW_FAIL)
+#define VEH_FW_FAIL FW_FAIL
+#else
+#define VEH_FW_FAIL 0
+#endif
+
 #define LOOP_HZ 400u
 #define IO_PERIOD_US 2000u
 #define STOP_TIMEOUT_US 100000u
@@ -179,6 +187,7 @@ static veh_gcs_cmd_t cb_gcs_poll(void *ctx)
 }
 
 static uint32_t failures;
+static mt_mission_cmd_t bad_mission[16];
 
 static void check(bool ok, const char *what)
 {
@@ -221,18 +230,36 @@ int main(void)
     plat.telem_write = cb_telem;
     plat.gcs_poll = cb_gcs_poll;
     plat.task_work = NULL; /* real execution time */
-    plat.status_lines = false;
+    plat.status_lines = true;
 
-    st = veh_init(&plat, &home, veh_builtin_mission, veh_builtin_mission_len, &bad);
+    if (VEH_FW_FAIL == 1) {
+        uint16_t i;
+        for (i = 0u; (i < veh_builtin_mission_len) && (i < 15u); i++) {
+            bad_mission[i] = veh_builtin_mission[i];
+        }
+        bad_mission[i].id = MT_MAV_CMD_DO_JUMP; /* to command 99 of at most 16 */
+        bad_mission[i].frame = 2u;
+        bad_mission[i].options = 1u;
+        bad_mission[i].param[0] = 99 * MT_MISSION_MILLI;
+        bad_mission[i].param[1] = 1 * MT_MISSION_MILLI;
+        st = veh_init(&plat, &home, bad_mission, (uint16_t)(i + 1u), &bad);
+    } else {
+        st = veh_init(&plat, &home, veh_builtin_mission, veh_builtin_mission_len, &bad);
+    }
     g.boot_us = mt_port_now_us();
     g.next_arm_us = g.boot_us + ARM_FIRST_US;
     veh_printf("metronome firmware: ChibiOS/RT, loop %u Hz, %u tasks, built-in mission of %u "
                "items\n",
                (unsigned)veh_sched()->loop_rate_hz, (unsigned)veh_sched()->ntasks,
                (unsigned)veh_builtin_mission_len);
-    if (st != MT_OK) {
-        veh_printf("vehicle set-up failed: %s at %u\n", mt_status_str(st), (unsigned)bad);
+    if ((st != MT_OK) && (veh_sched()->ntasks == 0u)) {
+        veh_printf("task table rejected: %s at entry %u\n", mt_status_str(st), (unsigned)bad);
         fw_exit(FW_EXIT_FAILURE);
+    }
+    if (st != MT_OK) {
+        veh_printf("mission rejected by the sequencer: %s at index %u; the vehicle stays "
+                   "disarmed\n",
+                   mt_status_str(st), (unsigned)bad);
     }
     veh_timer_spec(&period_us, &cmin, &cmax);
     if ((mt_proc_register(veh_io_procs(), console_drain, NULL) != MT_OK) ||
