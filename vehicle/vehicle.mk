@@ -39,6 +39,12 @@ $(eval $(call veh_sitl,$(BUILD)/sitl/metronome-sitl-overloaded,gcc,-O2 -g,$(BUIL
     -DVEHICLE_TASKS_DEF='"$(CURDIR)/tests/vehicle/overloaded.def"'))
 $(BUILD)/sitl/metronome-sitl-overloaded: tests/vehicle/overloaded.def
 
+# the console formatter against the C library's printf (ASan + UBSan)
+$(BUILD)/sitl/test_vprint: tests/vehicle/test_vprint.c vehicle/src/vprint.c vehicle/src/vprint.h
+	@mkdir -p $(@D)
+	clang $(VEH_WARN) $(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all \
+	    -Ivehicle/src tests/vehicle/test_vprint.c vehicle/src/vprint.c -o $@
+
 .PHONY: sitl sched-check test-vehicle deps-sched
 sitl: $(BUILD)/sitl/metronome-sitl
 	@mkdir -p $(BUILD)/sitl
@@ -51,5 +57,5 @@ sched-check: deps-sched
 	$(SCHED_PYTHON) tools/sched_check.py vehicle/tasks.def
 
 test-vehicle: deps-sched $(BUILD)/sitl/metronome-sitl $(BUILD)/sitl/metronome-sitl-overloaded \
-              $(BUILD)/sitl-asan/metronome-sitl
+              $(BUILD)/sitl-asan/metronome-sitl $(BUILD)/sitl/test_vprint
 	$(SCHED_PYTHON) tests/vehicle/run_tests.py --build $(BUILD)

@@ -387,7 +387,14 @@ def t_agreement(S):
                                                            late.tasks["telemetry_send"]))
 
 
+def t_vprint(S):
+    p = subprocess.run([os.path.join(os.path.dirname(S.sitl), "test_vprint")], capture_output=True, text=True,
+                       timeout=60)
+    check(p.returncode == 0 and "0 failures" in p.stdout, p.stdout + p.stderr)
+
+
 TESTS = [
+    ("vprint: console formatter against printf (ASan+UBSan)", t_vprint),
     ("sched_check: vehicle/tasks.def is schedulable", t_sched_nominal),
     ("sched_check: the overloaded table fails, telemetry_send must miss", t_sched_overloaded),
     ("sched_check: malformed and dishonest tables are rejected", t_sched_rejects),
@@ -414,7 +421,7 @@ def main(argv):
     ap.add_argument("-k", default="")
     args = ap.parse_args(argv)
     S = Suite(os.path.abspath(args.build))
-    for b in (S.sitl, S.sitl_over, S.sitl_asan):
+    for b in (S.sitl, S.sitl_over, S.sitl_asan, os.path.join(os.path.dirname(S.sitl), "test_vprint")):
         if not os.access(b, os.X_OK):
             print("missing %s (make test-vehicle builds it)" % b)
             return 2
