@@ -685,9 +685,9 @@ def main(argv):
     tp, tmin, tmax = t.timer
     nfast = sum(1 for k in t.tasks if k.fast)
     print("sched-check: %s (Z3 %s)" % (t.path, z3.get_version_string()))
-    print("loop %d Hz (period %d us), %d tasks (%d fast), timer procs every %d us taking %d..%d us, "
-          "scan starts up to %d us after the sample" % (t.loop_hz, P, len(t.tasks), nfast, tp, tmin, tmax,
-                                                       t.latency))
+    print("loop %d Hz (period %d us), %d tasks (%d fast), timer procs every %d us taking %d..%d us%s"
+          % (t.loop_hz, P, len(t.tasks), nfast, tp, tmin, tmax,
+             (", scan starts up to %d us after the sample" % t.latency) if t.latency else ""))
     result = {"table": t.path, "loop_hz": t.loop_hz, "period_us": P, "tasks": []}
     try:
         al = aligned_check(t, args.timeout)

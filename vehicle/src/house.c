@@ -56,6 +56,7 @@ void veh_status_line(veh_t *v)
     char gs[16];
     char bat[16];
     char load[16];
+    char nav[8];
 
     s->status_runs++;
     if (!v->plat->status_lines) {
@@ -67,7 +68,11 @@ void veh_status_line(veh_t *v)
     (void)vp_float(gs, sizeof(gs), vm_norm2(s->vel[0], s->vel[1]), 1u);
     (void)vp_float(bat, sizeof(bat), s->bat_volt, 2u);
     (void)vp_fix(load, sizeof(load), (int64_t)mt_sched_load_permille(&v->sched), 10, 1u);
-    veh_say(v, "status: %s %s nav #%u alt %s m dist %s m gs %s m/s bat %s V load %s%%",
-            veh_mode_name(s->mode), s->armed ? "armed" : "disarmed", v->mission.nav, alt, dist, gs,
-            bat, load);
+    if (v->mission.nav == MT_MISSION_NONE) {
+        (void)vp_snprintf(nav, sizeof(nav), "-");
+    } else {
+        (void)vp_snprintf(nav, sizeof(nav), "#%u", (unsigned)v->mission.nav);
+    }
+    veh_say(v, "status: %s %s nav %s alt %s m dist %s m gs %s m/s bat %s V load %s%%",
+            veh_mode_name(s->mode), s->armed ? "armed" : "disarmed", nav, alt, dist, gs, bat, load);
 }
