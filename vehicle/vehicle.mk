@@ -35,6 +35,7 @@ endef
 $(eval $(call veh_sitl,$(BUILD)/sitl/metronome-sitl,gcc,-O2 -g,$(BUILD)/gcc,))
 $(eval $(call veh_sitl,$(BUILD)/sitl-asan/metronome-sitl,clang,$(SAN_ASAN) -fsanitize=undefined \
     -fno-sanitize-recover=all,$(BUILD)/asanubsan,))
+$(eval $(call veh_sitl,$(BUILD)/sitl-tsan/metronome-sitl,clang,$(SAN_TSAN),$(BUILD)/tsan,))
 $(eval $(call veh_sitl,$(BUILD)/sitl/metronome-sitl-overloaded,gcc,-O2 -g,$(BUILD)/gcc,\
     -DVEHICLE_TASKS_DEF='"$(CURDIR)/tests/vehicle/overloaded.def"'))
 $(BUILD)/sitl/metronome-sitl-overloaded: tests/vehicle/overloaded.def
@@ -57,5 +58,5 @@ sched-check: deps-sched
 	$(SCHED_PYTHON) tools/sched_check.py vehicle/tasks.def
 
 test-vehicle: deps-sched $(BUILD)/sitl/metronome-sitl $(BUILD)/sitl/metronome-sitl-overloaded \
-              $(BUILD)/sitl-asan/metronome-sitl $(BUILD)/sitl/test_vprint
+              $(BUILD)/sitl-asan/metronome-sitl $(BUILD)/sitl-tsan/metronome-sitl $(BUILD)/sitl/test_vprint
 	$(SCHED_PYTHON) tests/vehicle/run_tests.py --build $(BUILD)
