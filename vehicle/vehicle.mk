@@ -3,7 +3,8 @@
 # Metronome - the example vehicle (included by the top-level Makefile).
 #
 #   make sitl [MISSION=vehicle/missions/<file>.waypoints] [SITL_ARGS=...]
-#   make sched-check                 Z3 schedulability check of vehicle/tasks.def
+#   make sched-check [SCHED_TABLE=...]  Z3 schedulability check of vehicle/tasks.def (exit 1:
+#                                    not schedulable, e.g. SCHED_TABLE=tests/vehicle/overloaded.def)
 #   make test-vehicle                SITL flights, fault injection, bad missions,
 #                                    sched-check against SITL (tests/vehicle/)
 #
@@ -22,6 +23,7 @@ VEH_WARN     := -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
                 -Wsign-conversion -Wcast-align -Werror
 MISSION      ?= vehicle/missions/plain.waypoints
 SITL_ARGS    ?=
+SCHED_TABLE  ?= vehicle/tasks.def
 SCHED_PYTHON ?= $(shell [ -x /usr/bin/python3 ] && echo /usr/bin/python3 || echo python3)
 
 # $(call veh_sitl,OUT,CC,FLAGS,LIBDIR,EXTRA_DEFS)
@@ -55,7 +57,7 @@ deps-sched:
 	@tools/bootstrap.sh sched >/dev/null
 
 sched-check: deps-sched
-	$(SCHED_PYTHON) tools/sched_check.py vehicle/tasks.def
+	$(SCHED_PYTHON) tools/sched_check.py $(SCHED_TABLE)
 
 test-vehicle: deps-sched $(BUILD)/sitl/metronome-sitl $(BUILD)/sitl/metronome-sitl-overloaded \
               $(BUILD)/sitl-asan/metronome-sitl $(BUILD)/sitl-tsan/metronome-sitl $(BUILD)/sitl/test_vprint
