@@ -400,6 +400,80 @@ def t_vprint(S):
     check(p.returncode == 0 and "0 failures" in p.stdout, p.stdout + p.stderr)
 
 
+def t_encoding(S):
+    """The Z3 encoding of a tick against the kernel itself: SITL runs kernel/src/sched.c and
+    traces every input of each tick (sample time, timer rounds with their due times and costs,
+    each task's simulated cost) and the kernel's decisions (tasks run, tasks skipped, end of
+    the scan). Given the same inputs, the model must decide the same, tick by tick."""
+    sys.path.insert(0, os.path.join(ROOT, "tools"))
+    import sched_check as sc
+    import z3
+    for binary, table, ticks in ((S.sitl_over, os.path.join(ROOT, "tests", "vehicle", "overloaded.def"), 600),
+                                 (S.sitl, os.path.join(ROOT, "vehicle", "tasks.def"), 200)):
+        tr = os.path.join(S.tmp, "trace-%s.txt" % os.path.basename(table))
+        run = Run(binary, ["--quiet", "--ticks", str(ticks), "--trace", tr, os.path.join(MISSIONS, "plain.waypoints")])
+        check(run.rc == 0, "traced run: %s" % run.err)
+        t = sc.parse(table)
+        sc.validate(t)
+        tp = t.timer[0]
+        rounds = {}            # due time -> cost
+        ticks_in = []          # (sample, {task: cost}, tick, end, run, skip)
+        cur = None
+        for line in open(tr):
+            f = line.split()
+            if f[0] == "R":
+                rounds[int(f[1])] = int(f[2])
+            elif f[0] == "S":
+                cur = [int(f[1]), {}]
+            elif f[0] == "E":
+                cur[1][int(f[1])] = int(f[2])
+            elif f[0] == "K":
+                ticks_in.append((cur[0], cur[1], int(f[1]), int(f[2]), int(f[3], 16), int(f[4], 16)))
+        check(len(ticks_in) == ticks, "%d ticks traced" % len(ticks_in))
+        grid0 = min(rounds)    # the timer grid: grid0 + m * tp
+        s = z3.Solver()
+        due = [None if k.fast else z3.Bool("due%d" % i) for i, k in enumerate(t.tasks)]
+        model = sc.TickModel(t, "x", 0)
+        terms = model.build(s, "a", lambda i: due[i], z3.IntVal(0))
+        n = len(t.tasks)
+        last_run = [0] * n
+        decided = skips = 0
+        for sample, costs, tick, end, run_mask, skip_mask in ticks_in:
+            d0 = grid0 + -(-(sample - grid0) // tp) * tp   # first round due at or after the sample
+            s.push()
+            s.add(z3.Int("lat_x_a") == 0, z3.Int("phase_x_a") == d0 - sample)
+            if d0 - tp in rounds:
+                s.add(z3.Int("carry_x_a") == rounds[d0 - tp])
+            for m in range(model.rounds):
+                if d0 + m * tp in rounds:
+                    s.add(z3.Int("round%d_x_a" % m) == rounds[d0 + m * tp])
+            for i, k in enumerate(t.tasks):
+                if not k.fast:
+                    s.add(due[i] == (tick - last_run[i] >= k.interval))
+                if i in costs:
+                    s.add(z3.Int("e%d_x_a" % i) == costs[i])
+            check(s.check() == z3.sat, "tick %d: the traced inputs are outside the model" % tick)
+            m = s.model()
+            got_run = sum(1 << i for i in range(n) if not t.tasks[i].fast and z3.is_true(m.eval(terms["run"][i])))
+            got_skip = sum(1 << i for i in range(n) if z3.is_true(m.eval(terms["skip"][i])))
+            want_run = run_mask & ~sum(1 << i for i in range(n) if t.tasks[i].fast)
+            check(got_run == want_run and got_skip == skip_mask,
+                  "tick %d: model runs %x skips %x, kernel runs %x skips %x" % (tick, got_run, got_skip, want_run,
+                                                                               skip_mask))
+            check(m.eval(terms["wend"]).as_long() == end - sample,
+                  "tick %d: model ends at %d us, SITL at %d us" % (tick, m.eval(terms["wend"]).as_long(),
+                                                                   end - sample))
+            s.pop()
+            for i in range(n):
+                if run_mask >> i & 1:
+                    last_run[i] = tick
+            decided += 1
+            skips += bin(skip_mask).count("1")
+        check(decided == ticks, "ticks compared")
+        if "overloaded" in table:
+            check(skips > 200, "the overloaded trace has skips to compare (%d)" % skips)
+
+
 TESTS = [
     ("vprint: console formatter against printf (ASan+UBSan)", t_vprint),
     ("sched_check: vehicle/tasks.def is schedulable", t_sched_nominal),
@@ -417,6 +491,7 @@ TESTS = [
     ("sitl: malformed missions rejected, vehicle stays disarmed", t_bad_mission),
     ("sitl: unreadable mission file", t_unreadable_mission),
     ("sitl: agreement with sched_check (nominal and overloaded)", t_agreement),
+    ("sched_check: the tick encoding decides as the kernel, tick by tick", t_encoding),
     ("sitl: ASan+UBSan build", t_sanitizers),
     ("sitl: --realtime on real threads (TSan build)", t_realtime),
 ]

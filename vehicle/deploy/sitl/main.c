@@ -17,6 +17,10 @@
  *                        its cost (from START s for DURATION s; default: always)
  *     --wind N,E         constant wind, m/s
  *     --quiet            no 1 Hz status lines
+ *     --trace FILE       simulated time: one line per event for the first --ticks (or all)
+ *                        ticks: "S t" sample, "R due cost" timer round, "E task cost"
+ *                        task run, "K tick end runmask skipmask" end of the scan
+ *                        (tests/vehicle: the Z3 encoding against the kernel's decisions)
  *
  * Simulated time (default): one thread; time moves only when a task spends its
  * simulated cost (a pseudo-random time in the range of tasks.def, mostly near its low
@@ -80,6 +84,8 @@ typedef struct {
     sitl_event_t ev[MAX_EVENTS];
     int nev;
     int next_ev;
+    /* trace */
+    FILE *trace;
     /* fault injection */
     int overrun_task;
     uint32_t overrun_us;
@@ -164,8 +170,13 @@ static void sim_set_at_least(uint64_t t)
 /* The timer thread's round: all timer procs, then their cost. */
 static void timer_round(sitl_t *s)
 {
+    uint32_t c;
     (void)mt_proc_dispatch(veh_timer_procs());
-    mt_posix_sim_advance(cost(s, s->timer_cmin, s->timer_cmax));
+    c = cost(s, s->timer_cmin, s->timer_cmax);
+    mt_posix_sim_advance(c);
+    if (s->trace != NULL) {
+        fprintf(s->trace, "R %llu %u\n", (unsigned long long)s->next_timer, (unsigned)c);
+    }
     s->next_timer += s->timer_period;
 }
 
@@ -201,6 +212,9 @@ static void cb_task_work(void *ctx, uint32_t task, uint32_t cmin, uint32_t cmax)
             s->overrun_runs++;
         }
     }
+    if (s->trace != NULL) {
+        fprintf(s->trace, "E %u %llu\n", (unsigned)task, (unsigned long long)us);
+    }
     sim_spend(s, us);
 }
 
@@ -228,7 +242,52 @@ static uint64_t sim_wait(void *ctx)
     }
     sim_set_at_least(next);
     s->next_sample = next;
+    if (s->trace != NULL) {
+        fprintf(s->trace, "S %llu\n", (unsigned long long)next);
+    }
     return next;
+}
+
+/* ---- trace: what the scheduler decided in each tick ------------------------------------- */
+
+static uint64_t g_runs[MT_CFG_SCHED_MAX_TASKS];
+static uint64_t g_skips[MT_CFG_SCHED_MAX_TASKS];
+
+static void trace_tick_begin(void)
+{
+    const mt_sched_t *sc = veh_sched();
+    uint32_t i;
+    for (i = 0u; i < sc->ntasks; i++) {
+        mt_task_report_t r;
+        mt_sched_task_report(sc, i, &r);
+        g_runs[i] = r.runs;
+        g_skips[i] = r.budget_skips;
+    }
+}
+
+static void trace_tick_end(uint64_t max_ticks)
+{
+    const mt_sched_t *sc = veh_sched();
+    uint64_t run = 0u;
+    uint64_t skip = 0u;
+    uint32_t i;
+
+    for (i = 0u; i < sc->ntasks; i++) {
+        mt_task_report_t r;
+        mt_sched_task_report(sc, i, &r);
+        if (r.runs != g_runs[i]) {
+            run |= 1ull << i;
+        }
+        if (r.budget_skips != g_skips[i]) {
+            skip |= 1ull << i;
+        }
+    }
+    fprintf(g.trace, "K %llu %llu %llx %llx\n", (unsigned long long)sc->tick,
+            (unsigned long long)mt_port_now_us(), (unsigned long long)run, (unsigned long long)skip);
+    if ((max_ticks != 0u) && (sc->tick >= max_ticks)) {
+        fclose(g.trace);
+        g.trace = NULL;
+    }
 }
 
 /* ---- mission file ------------------------------------------------------------------------ */
@@ -325,6 +384,7 @@ static int usage(void)
             "usage: metronome-sitl [--builtin] [--realtime] [--seed N] [--timeout S] [--ticks N]\n"
             "                      [--log FILE] [--event T:stop|resume|land]...\n"
             "                      [--overrun TASK:US[:START[:DURATION]]] [--wind N,E] [--quiet]\n"
+            "                      [--trace FILE]\n"
             "                      [MISSION.waypoints]\n");
     return 2;
 }
@@ -417,6 +477,7 @@ int main(int argc, char **argv)
     static mt_mission_cmd_t cmds[MT_CFG_MISSION_MAX_CMDS];
     const char *mission_path = NULL;
     const char *log_path = NULL;
+    const char *trace_path = NULL;
     bool builtin = false;
     bool quiet = false;
     uint64_t seed = 1u;
@@ -457,6 +518,9 @@ int main(int argc, char **argv)
         } else if ((strcmp(a, "--ticks") == 0) && (val != NULL)) {
             max_ticks = strtoull(val, NULL, 10);
             i++;
+        } else if ((strcmp(a, "--trace") == 0) && (val != NULL)) {
+            trace_path = val;
+            i++;
         } else if ((strcmp(a, "--log") == 0) && (val != NULL)) {
             log_path = val;
             i++;
@@ -493,6 +557,13 @@ int main(int argc, char **argv)
         }
     }
 
+    if (trace_path != NULL) {
+        g.trace = g.sim ? fopen(trace_path, "w") : NULL;
+        if (g.trace == NULL) {
+            fprintf(stderr, "sitl: --trace needs simulated time and a writable file\n");
+            return 2;
+        }
+    }
     if (g.sim) {
         mt_posix_sim_enable(SIM_START_US);
     }
@@ -580,7 +651,13 @@ int main(int argc, char **argv)
         for (;;) {
             uint64_t now;
             veh_phase_t ph;
+            if (g.trace != NULL) {
+                trace_tick_begin();
+            }
             veh_loop_once(simplat_wait, &g.world);
+            if (g.trace != NULL) {
+                trace_tick_end(max_ticks);
+            }
             now = mt_port_now_us() - g.boot_us;
             if (g.world.sim.crashed) {
                 veh_note_crash(g.world.sim.last_touchdown_speed);
@@ -632,6 +709,10 @@ int main(int argc, char **argv)
     if (g.overrun_task >= 0) {
         veh_printf("fault injection: %llu runs of %s overran by %u us\n",
                    (unsigned long long)g.overrun_runs, g_overrun_name, (unsigned)g.overrun_us);
+    }
+    if (g.trace != NULL) {
+        fclose(g.trace);
+        g.trace = NULL;
     }
     if (g.log != NULL) {
         if ((fclose(g.log) != 0) || g.log_error) {
