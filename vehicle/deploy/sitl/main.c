@@ -283,7 +283,8 @@ static void trace_tick_end(uint64_t max_ticks)
         }
     }
     fprintf(g.trace, "K %llu %llu %llx %llx\n", (unsigned long long)sc->tick,
-            (unsigned long long)mt_port_now_us(), (unsigned long long)run, (unsigned long long)skip);
+            (unsigned long long)mt_port_now_us(), (unsigned long long)run,
+            (unsigned long long)skip);
     if ((max_ticks != 0u) && (sc->tick >= max_ticks)) {
         fclose(g.trace);
         g.trace = NULL;
