@@ -202,6 +202,23 @@ def t_stop_resume(S):
     check(not any(20.0 < t < 26.0 for t, _ in ev), "mission events while stopped")
 
 
+def t_loiter_unlim(S):
+    """LOITER_UNLIM holds forever; a ground-station 'land' ends the flight, the mission stays
+    incomplete and the run says so (exit 1)."""
+    r = S.fly(os.path.join(ROOT, "tests", "vehicle", "missions", "loiter_unlim.waypoints"), "--event", "30:land")
+    check(r.rc == 1, "exit status %d (expected 1)" % r.rc)
+    check(started(r) == [("1", "TAKEOFF"), ("2", "LOITER_UNLIM")], "sequence %s" % started(r))
+    check(r.events("mission: #2 LOITER_UNLIM complete") == [], "LOITER_UNLIM completed")
+    ev = [(float(m.group(1)), m.group(2)) for m in re.finditer(r"\[\s*([0-9.]+)\] ([^\n]*)", r.out)]
+    check([t for t, e in ev if e == "gcs: land"] == [30.0], "land at 30 s")
+    check(r.line("run ended: vehicle landed and disarmed, mission not complete") is not None, "run end")
+    check(r.line("mission: NOT COMPLETE: mission stopped at #2") is not None, "summary")
+    m = re.search(r"vehicle: landed at ([0-9.]+) m from home", r.out)
+    check(m is not None and 18.0 < float(m.group(1)) < 22.0, "landed at the loiter point")
+    for name, t in r.tasks.items():
+        check(t["slips"] == 0 and t["overrun"] == 0, "%s slipped" % name)
+
+
 def t_builtin_matches_file(S):
     a = S.fly(None, "--builtin")
     b = S.fly(os.path.join(MISSIONS, "builtin.waypoints"))
@@ -485,6 +502,7 @@ TESTS = [
     ("sitl: RTL", t_rtl),
     ("sitl: loiter turns/time, conditions, servo", t_loiter),
     ("sitl: stop and resume in the middle", t_stop_resume),
+    ("sitl: LOITER_UNLIM holds until the ground station lands it", t_loiter_unlim),
     ("sitl: built-in mission = builtin.waypoints", t_builtin_matches_file),
     ("sitl: deterministic simulated time", t_deterministic),
     ("sitl: fault injection (gcs_update overruns)", t_fault_injection),

@@ -155,12 +155,10 @@ typedef struct {
     veh_docmd_t doc;
     float hold_pos[3];
     float land_pos[3];
-    uint8_t land_phase;
     float rtl_alt;
     veh_phase_t phase;
     bool crashed;
     bool arm_refused_said;
-    bool gcs_arm_pending;
     char refuse_reason[64];
     /* home */
     veh_home_t home;
@@ -191,7 +189,6 @@ typedef struct {
     mt_proc_set_t io_procs;
     veh_counters_t c;
     uint64_t boot_us;
-    bool booted;
 } veh_t;
 
 /* ---- component entry points ------------------------------------------------------------ */
