@@ -27,6 +27,9 @@ help:
 	@echo "make mission-tool   build/mt-mission (check QGC WPL 110 mission files, print the plan)"
 	@echo "make test-mission   mission tests (gcc, ASan+UBSan) and mt-mission over tests/missions"
 	@echo "make fuzz           libFuzzer targets (clang, ASan+UBSan), short run (FUZZ_SECONDS)"
+	@echo "make sitl [MISSION=vehicle/missions/<file>.waypoints] [SITL_ARGS=...]   fly the example vehicle"
+	@echo "make sched-check    Z3: is the vehicle's task table (vehicle/tasks.def) schedulable?"
+	@echo "make test-vehicle   SITL flights, fault injection, bad missions, sched-check vs SITL"
 
 # ---------------------------------------------------------------- host builds
 # $(call host_lib,NAME,CC,EXTRA_CFLAGS)
@@ -138,6 +141,7 @@ clean:
 -include tla/tla.mk
 -include bench/bench.mk
 -include hal_chibios/mk/targets.mk
+-include vehicle/vehicle.mk
 
 # ---------------------------------------------------------------- mission (sequencer, files, tool)
 MISSION_HOST_SRC := $(wildcard tools/mission/wpl.c tools/mission/report.c)
