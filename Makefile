@@ -19,7 +19,8 @@ WARN_CXX   := -std=c++17 -Wall -Wextra -Wshadow -Werror
 
 help:
 	@echo "make            build the kernel and host port with gcc and clang (warnings are errors)"
-	@echo "make test       install test deps, run the googletest suite: gcc, clang, ASan, UBSan, TSan"
+	@echo "make test       install test deps, run the googletest suite: gcc, clang, ASan, UBSan, TSan;"
+	@echo "                mt-mission over the mission files; the vehicle tests (make test-vehicle)"
 	@echo "make cross      build the kernel for Cortex-M4 and print sizes per module"
 	@echo "make lint       cppcheck (MISRA C:2012 addon) and clang-tidy over kernel/"
 	@echo "make demo       run a task table on the host port and print its statistics"
@@ -94,6 +95,7 @@ test: deps-test
 	    $(BUILD)/$$v/mt_tests --gtest_brief=1; \
 	done
 	@$(MAKE) --no-print-directory test-mission-tool
+	@$(MAKE) --no-print-directory test-vehicle
 
 test-fast: $(BUILD)/gcc/mt_tests
 	$(BUILD)/gcc/mt_tests
