@@ -51,7 +51,18 @@ typedef enum {
     MT_E_MISSION_SYNTAX = 22, /**< Mission file: malformed line or field (file layer). */
     MT_E_STATE = 23,         /**< The operation is not allowed in the object's current state
                                   (mission running, stopped, complete). */
-    MT_STATUS_COUNT = 24     /**< Number of statuses (sentinel, not a status). */
+    MT_E_BUS_MSG_SIZE = 24,  /**< Topic bus: message size 0 or above MT_CFG_BUS_MAX_MSG at init,
+                                  or a publish/copy size that is not the topic's. */
+    MT_E_BUS_QUEUE_LEN = 25, /**< Topic bus: queue length 0 or above MT_CFG_BUS_MAX_QUEUE. */
+    MT_E_BUS_STORAGE = 26,   /**< Topic bus: storage NULL or smaller than
+                                  MT_BUS_STORAGE_BYTES(msg_size, queue_len). */
+    MT_E_BUS_BEHIND = 27,    /**< Topic bus: a reliable subscriber has not consumed the oldest
+                                  queued message; nothing published (counted in `rejected`). */
+    MT_E_BUS_TORN = 28,      /**< Topic bus: every copy attempt was overwritten by a publisher
+                                  while it copied; nothing delivered (counted in `torn`). */
+    MT_W_BUS_MISSED = 29,    /**< Topic bus: copied, but messages had left the queue before the
+                                  subscriber reached them (counted in `missed`). */
+    MT_STATUS_COUNT = 30     /**< Number of statuses (sentinel, not a status). */
 } mt_status_t;
 
 /** Short stable name of a status ("MT_E_FULL"); "MT_STATUS_?" for an unknown value. */
