@@ -19,6 +19,9 @@
  * MtSlotNext(h, q)    the queue slot after h in a queue of q slots
  * MtSlotBack(h, d, q) the queue slot d places before h (0 <= d < q)
  * MtSatInc, MtSatAdd  saturating 32-bit counters
+ * MtNextDist(p, q)            how many messages before the newest the next message to copy
+ *                              lies, for a subscriber p behind in a queue of q (p >= 1): the
+ *                              oldest retained one (q - 1) when more than q behind
  * MtDue(last, iv, now)         an interval gate is open: iv is 0, or at least iv
  *                              microseconds passed since last (uORB SubscriptionInterval)
  * MtClampNext(last, iv, now)   the gate's new last time after an update: last + iv,
@@ -38,6 +41,8 @@
     logic integer MtSatInc(integer x) = x < 4294967295 ? x + 1 : x;
 
     logic integer MtSatAdd(integer x, integer k) = x + k <= 4294967295 ? x + k : 4294967295;
+
+    logic integer MtNextDist(integer p, integer q) = p > q ? q - 1 : p - 1;
 
     predicate MtDue(integer last, integer iv, integer now) =
         iv == 0 || (now >= last && now - last >= iv);

@@ -58,6 +58,15 @@ static uint32_t slot_back(uint32_t h, uint32_t d, uint32_t q)
     return (h >= d) ? (h - d) : ((h + q) - d);
 }
 
+/*@ requires 1 <= p && 1 <= q;
+    assigns \nothing;
+    ensures \result == MtNextDist(p, q);
+*/
+static uint32_t next_dist(uint32_t p, uint32_t q)
+{
+    return (p > q) ? (q - 1u) : (p - 1u);
+}
+
 /*@ assigns \nothing;
     ensures \result == MtSatInc(x);
 */
@@ -176,37 +185,90 @@ static void read_bytes(uint8_t *dst, const uint8_t *src, uint32_t n)
 /* ------------------------------------------------------------------------------------------
  * Topic */
 
-mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage,
-                          uint32_t storage_bytes)
+/* Validation of a topic description (check-then-act: no write). */
+/*@ requires \valid_read(d);
+    assigns \nothing;
+    behavior invalid:
+      assumes d->name == \null || (d->flags != 0 && d->flags != MT_TOPIC_RELIABLE);
+      ensures \result == MT_E_INVALID;
+    behavior msg_size:
+      assumes d->name != \null && (d->flags == 0 || d->flags == MT_TOPIC_RELIABLE);
+      assumes d->msg_size < 1 || d->msg_size > MT_CFG_BUS_MAX_MSG;
+      ensures \result == MT_E_BUS_MSG_SIZE;
+    behavior queue_len:
+      assumes d->name != \null && (d->flags == 0 || d->flags == MT_TOPIC_RELIABLE);
+      assumes 1 <= d->msg_size <= MT_CFG_BUS_MAX_MSG;
+      assumes d->queue_len < 1 || d->queue_len > MT_CFG_BUS_MAX_QUEUE;
+      ensures \result == MT_E_BUS_QUEUE_LEN;
+    behavior storage:
+      assumes d->name != \null && (d->flags == 0 || d->flags == MT_TOPIC_RELIABLE);
+      assumes 1 <= d->msg_size <= MT_CFG_BUS_MAX_MSG;
+      assumes 1 <= d->queue_len <= MT_CFG_BUS_MAX_QUEUE;
+      assumes storage == \null || storage_bytes < d->msg_size * d->queue_len;
+      ensures \result == MT_E_BUS_STORAGE;
+    behavior ok:
+      assumes d->name != \null && (d->flags == 0 || d->flags == MT_TOPIC_RELIABLE);
+      assumes 1 <= d->msg_size <= MT_CFG_BUS_MAX_MSG;
+      assumes 1 <= d->queue_len <= MT_CFG_BUS_MAX_QUEUE;
+      assumes storage != \null && storage_bytes >= d->msg_size * d->queue_len;
+      ensures \result == MT_OK;
+    complete behaviors;
+    disjoint behaviors;
+*/
+static mt_status_t check_desc(const mt_topic_desc_t *d, const void *storage,
+                              uint32_t storage_bytes)
+{
+    mt_status_t st = MT_OK;
+
+    if ((d->name == (const char *)0) || ((d->flags != 0u) && (d->flags != MT_TOPIC_RELIABLE))) {
+        st = MT_E_INVALID;
+    } else if ((d->msg_size < 1u) || (d->msg_size > MT_CFG_BUS_MAX_MSG)) {
+        st = MT_E_BUS_MSG_SIZE;
+    } else if ((d->queue_len < 1u) || (d->queue_len > MT_CFG_BUS_MAX_QUEUE)) {
+        st = MT_E_BUS_QUEUE_LEN;
+    } else {
+        //@ ghost mul_mono_lemma(d->queue_len, MT_CFG_BUS_MAX_QUEUE, d->msg_size);
+        if ((storage == (const void *)0) || (storage_bytes < (d->msg_size * d->queue_len))) {
+            st = MT_E_BUS_STORAGE;
+        }
+    }
+    return st;
+}
+
+/* Lemma (ghost function, proved by WP): the topic invariant from its parts, in a small
+ * context (the parts are discharged at the call site after the chain of stores). */
+/*@ ghost
+  /@ requires \valid(t);
+     requires 1 <= t->size <= MT_CFG_BUS_MAX_MSG && 1 <= t->qlen <= MT_CFG_BUS_MAX_QUEUE;
+     requires t->head < t->qlen && t->published <= 1 && t->reliable <= 1;
+     requires t->nnotify == 0 && t->nrel == 0;
+     requires \valid(t->buf + (0 .. t->size * t->qlen - 1));
+     requires \separated(t, t->buf + (0 .. t->size * t->qlen - 1));
+     assigns \nothing;
+     ensures MtTopicInv(t);
+  @/
+  static void topic_inv_intro(mt_topic_t *t) { }
+*/
+
+/* Fill in a validated topic (scalar arguments: no read of the description after a store
+ * into the topic, so no frame goal between the two objects). */
+/*@ requires \valid(t);
+    requires 1 <= size <= MT_CFG_BUS_MAX_MSG && 1 <= qlen <= MT_CFG_BUS_MAX_QUEUE;
+    requires reliable <= 1;
+    requires \valid(buf + (0 .. size * qlen - 1));
+    requires \separated(t, buf + (0 .. size * qlen - 1));
+    assigns *t;
+    ensures MtTopicInv(t);
+    ensures t->size == size && t->qlen == qlen && t->buf == buf && t->reliable == reliable &&
+            t->name == name;
+    ensures t->gen == first_gen && t->published == 0 && t->nnotify == 0 && t->nrel == 0;
+    ensures t->publishes == 0 && t->rejected == 0 && t->notified == 0;
+*/
+static void setup(mt_topic_t *t, const char *name, uint8_t *buf, uint32_t size, uint32_t qlen,
+                  uint32_t reliable, uint32_t first_gen)
 {
     uint32_t i;
 
-    t->gen = d->first_gen;
-    t->head = 0u;
-    t->published = 0u;
-    t->publishes = 0u;
-    t->rejected = 0u;
-    t->notify_calls = 0u;
-    t->nnotify = 0u;
-    t->nrel = 0u;
-    t->name = d->name;
-    t->buf = (uint8_t *)storage;
-    t->size = 0u; /* unusable until every check passed */
-    t->qlen = 1u;
-    t->reliable = 0u;
-    if ((d->name == (const char *)0) || ((d->flags != 0u) && (d->flags != MT_TOPIC_RELIABLE))) {
-        return MT_E_INVALID;
-    }
-    if ((d->msg_size < 1u) || (d->msg_size > MT_CFG_BUS_MAX_MSG)) {
-        return MT_E_BUS_MSG_SIZE;
-    }
-    if ((d->queue_len < 1u) || (d->queue_len > MT_CFG_BUS_MAX_QUEUE)) {
-        return MT_E_BUS_QUEUE_LEN;
-    }
-    //@ ghost mul_mono_lemma(d->queue_len, MT_CFG_BUS_MAX_QUEUE, d->msg_size);
-    if ((storage == (void *)0) || (storage_bytes < (d->msg_size * d->queue_len))) {
-        return MT_E_BUS_STORAGE;
-    }
     /* A slot never written keeps the stamp first_gen, which no copy targets before 2^32
      * publications (a copy targets a published generation, first_gen + 1 or later). */
     /*@ loop invariant 0 <= i <= MT_CFG_BUS_MAX_QUEUE;
@@ -214,12 +276,35 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
         loop variant MT_CFG_BUS_MAX_QUEUE - i;
     */
     for (i = 0u; i < MT_CFG_BUS_MAX_QUEUE; i++) {
-        t->stamp[i] = d->first_gen;
+        t->stamp[i] = first_gen;
     }
-    t->qlen = d->queue_len;
-    t->head = d->queue_len - 1u; /* the first message goes to slot 0 */
-    t->reliable = (d->flags == MT_TOPIC_RELIABLE) ? 1u : 0u;
-    t->size = d->msg_size;
+    t->gen = first_gen;
+    t->head = qlen - 1u; /* the first message goes to slot 0 */
+    t->published = 0u;
+    t->publishes = 0u;
+    t->rejected = 0u;
+    t->notified = 0u;
+    t->nnotify = 0u;
+    t->nrel = 0u;
+    t->name = name;
+    t->buf = buf;
+    t->size = size;
+    t->qlen = qlen;
+    t->reliable = reliable;
+    //@ ghost topic_inv_intro(t);
+}
+
+mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage,
+                          uint32_t storage_bytes)
+{
+    mt_status_t st = check_desc(d, storage, storage_bytes);
+
+    if (st != MT_OK) {
+        t->size = 0u; /* unusable */
+        return st;
+    }
+    setup(t, d->name, (uint8_t *)storage, d->msg_size, d->queue_len,
+          (d->flags == MT_TOPIC_RELIABLE) ? 1u : 0u, d->first_gen);
     return MT_OK;
 }
 
@@ -265,8 +350,14 @@ static void note_rejected(mt_topic_t *t)
     requires \valid_read(msg + (0 .. t->size - 1));
     requires \separated(msg + (0 .. t->size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
     assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
-            t->buf[0 .. t->size * t->qlen - 1];
+            t->buf[0 .. t->size * t->qlen - 1], t->publishes;
     ensures MtTopicInv(t);
+    ensures t->publishes == MtSatInc(\old(t->publishes));
+    ensures notify_kept: \forall integer i; 0 <= i < MT_CFG_BUS_MAX_NOTIFY ==>
+        t->notify_last_gen[i] == \old(t->notify_last_gen[i]) &&
+        t->notify_min_updates[i] == \old(t->notify_min_updates[i]) &&
+        t->notify_calls[i] == \old(t->notify_calls[i]) &&
+        t->notify_gated[i] == \old(t->notify_gated[i]);
     ensures t->gen == MtGenNext(\old(t->gen));
     ensures t->head == MtSlotNext(\old(t->head), t->qlen);
     ensures t->published == 1;
@@ -286,67 +377,77 @@ static void put(mt_topic_t *t, const uint8_t *msg)
     mt_store_release_u32(&t->head, nh);
     mt_store_release_u32(&t->published, 1u);
     mt_store_release_u32(&t->gen, ng);
+    t->publishes = sat_inc(t->publishes);
 }
 
 /* Notifier i: pass its gates or count the hold-back. */
 /*@ requires held: MtLocked == 1;
     requires MtTopicInv(t);
     requires i < t->nnotify;
-    assigns t->notify[i].last_gen, t->notify[i].last_us, t->notify[i].calls,
-            t->notify[i].gated, t->notify_calls, MtPortNow;
+    assigns t->notify_last_gen[i], t->notify_last_us[i], t->notify_calls[i],
+            t->notify_gated[i], t->notified, MtPortNow;
     ensures MtTopicInv(t);
-    ensures step: (t->notify[i].calls == MtSatInc(\old(t->notify[i].calls)) &&
-                   t->notify[i].gated == \old(t->notify[i].gated) &&
-                   t->notify[i].last_gen == t->gen) ||
-                  (t->notify[i].calls == \old(t->notify[i].calls) &&
-                   t->notify[i].gated == MtSatInc(\old(t->notify[i].gated)) &&
-                   t->notify[i].last_gen == \old(t->notify[i].last_gen));
-    ensures count_gate: MtGenDist(t->gen, \old(t->notify[i].last_gen)) < t->notify[i].min_updates ==>
-        t->notify[i].last_gen == \old(t->notify[i].last_gen);
+    ensures step: (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
+                   t->notify_gated[i] == \old(t->notify_gated[i]) &&
+                   t->notify_last_gen[i] == t->gen) ||
+                  (t->notify_calls[i] == \old(t->notify_calls[i]) &&
+                   t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
+                   t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
+    ensures count_gate: MtGenDist(t->gen, \old(t->notify_last_gen[i])) < t->notify_min_updates[i] ==>
+        t->notify_last_gen[i] == \old(t->notify_last_gen[i]);
+    ensures gen_kept: t->gen == \old(t->gen);
+    ensures others: \forall integer j; 0 <= j < MT_CFG_BUS_MAX_NOTIFY && j != i ==>
+        t->notify_last_gen[j] == \old(t->notify_last_gen[j]) &&
+        t->notify_calls[j] == \old(t->notify_calls[j]) &&
+        t->notify_gated[j] == \old(t->notify_gated[j]);
 */
 static void notify_one(mt_topic_t *t, uint32_t i)
 {
-    mt_bus_notifier_t *e = &t->notify[i];
     bool fire = false;
 
-    if (gen_dist(t->gen, e->last_gen) >= e->min_updates) {
-        if (e->interval_us == 0u) {
+    if (gen_dist(t->gen, t->notify_last_gen[i]) >= t->notify_min_updates[i]) {
+        if (t->notify_interval_us[i] == 0u) {
             fire = true;
         } else {
             uint64_t now = mt_port_now_us();
-            if (interval_due(e->last_us, e->interval_us, now)) {
-                e->last_us = clamp_next(e->last_us, e->interval_us, now);
+            if (interval_due(t->notify_last_us[i], t->notify_interval_us[i], now)) {
+                t->notify_last_us[i] = clamp_next(t->notify_last_us[i], t->notify_interval_us[i], now);
                 fire = true;
             }
         }
     }
-    if (fire) {
-        e->last_gen = t->gen;
-        e->calls = sat_inc(e->calls);
-        t->notify_calls = sat_inc(t->notify_calls);
-        mt_bus_invoke_notify(e->fn, e->arg);
+    /* a registered notifier never has a NULL fn (mt_topic_notify_add refuses it); the
+     * test keeps the dispatcher's requires local instead of in the topic invariant */
+    if (fire && (t->notify_fn[i] != (mt_bus_notify_fn_t)0)) {
+        t->notify_last_gen[i] = t->gen;
+        t->notify_calls[i] = sat_inc(t->notify_calls[i]);
+        t->notified = sat_inc(t->notified);
+        mt_bus_invoke_notify(t->notify_fn[i], t->notify_arg[i]);
     } else {
-        e->gated = sat_inc(e->gated);
+        t->notify_gated[i] = sat_inc(t->notify_gated[i]);
     }
 }
 
 /* Every registered notifier, in registration order. */
 /*@ requires held: MtLocked == 1;
     requires MtTopicInv(t);
-    assigns t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_gen,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_us,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].calls,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].gated, t->notify_calls, MtPortNow;
+    assigns t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow;
     ensures MtTopicInv(t);
     ensures notified: \forall integer i; 0 <= i < t->nnotify ==>
-          (t->notify[i].calls == MtSatInc(\old(t->notify[i].calls)) &&
-           t->notify[i].gated == \old(t->notify[i].gated) && t->notify[i].last_gen == t->gen) ||
-          (t->notify[i].calls == \old(t->notify[i].calls) &&
-           t->notify[i].gated == MtSatInc(\old(t->notify[i].gated)) &&
-           t->notify[i].last_gen == \old(t->notify[i].last_gen));
+          (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
+           t->notify_gated[i] == \old(t->notify_gated[i]) && t->notify_last_gen[i] == t->gen) ||
+          (t->notify_calls[i] == \old(t->notify_calls[i]) &&
+           t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
+           t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
     ensures count_gate: \forall integer i; 0 <= i < t->nnotify ==>
-          MtGenDist(t->gen, \old(t->notify[i].last_gen)) < t->notify[i].min_updates ==>
-          t->notify[i].last_gen == \old(t->notify[i].last_gen);
+          MtGenDist(t->gen, \old(t->notify_last_gen[i])) < t->notify_min_updates[i] ==>
+          t->notify_last_gen[i] == \old(t->notify_last_gen[i]);
+    ensures kept: t->gen == \old(t->gen) && t->nnotify == \old(t->nnotify) &&
+          (\forall integer i; 0 <= i < MT_CFG_BUS_MAX_NOTIFY ==>
+              t->notify_min_updates[i] == \old(t->notify_min_updates[i]));
 */
 static void notify_all(mt_topic_t *t)
 {
@@ -356,26 +457,33 @@ static void notify_all(mt_topic_t *t)
     /*@ loop invariant 0 <= i <= n && n == t->nnotify;
         loop invariant MtTopicInv(t);
         loop invariant done: \forall integer j; 0 <= j < i ==>
-          (t->notify[j].calls == MtSatInc(\at(t->notify[j].calls, LoopEntry)) &&
-           t->notify[j].gated == \at(t->notify[j].gated, LoopEntry) && t->notify[j].last_gen == t->gen) ||
-          (t->notify[j].calls == \at(t->notify[j].calls, LoopEntry) &&
-           t->notify[j].gated == MtSatInc(\at(t->notify[j].gated, LoopEntry)) &&
-           t->notify[j].last_gen == \at(t->notify[j].last_gen, LoopEntry));
+          (t->notify_calls[j] == MtSatInc(\at(t->notify_calls[j], LoopEntry)) &&
+           t->notify_gated[j] == \at(t->notify_gated[j], LoopEntry) && t->notify_last_gen[j] == t->gen) ||
+          (t->notify_calls[j] == \at(t->notify_calls[j], LoopEntry) &&
+           t->notify_gated[j] == MtSatInc(\at(t->notify_gated[j], LoopEntry)) &&
+           t->notify_last_gen[j] == \at(t->notify_last_gen[j], LoopEntry));
         loop invariant gate: \forall integer j; 0 <= j < i ==>
-          MtGenDist(t->gen, \at(t->notify[j].last_gen, LoopEntry)) < t->notify[j].min_updates ==>
-          t->notify[j].last_gen == \at(t->notify[j].last_gen, LoopEntry);
+          MtGenDist(t->gen, \at(t->notify_last_gen[j], LoopEntry)) < t->notify_min_updates[j] ==>
+          t->notify_last_gen[j] == \at(t->notify_last_gen[j], LoopEntry);
         loop invariant rest: \forall integer j; i <= j < MT_CFG_BUS_MAX_NOTIFY ==>
-          t->notify[j].calls == \at(t->notify[j].calls, LoopEntry) &&
-          t->notify[j].gated == \at(t->notify[j].gated, LoopEntry) &&
-          t->notify[j].last_gen == \at(t->notify[j].last_gen, LoopEntry);
-        loop assigns i, t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_gen,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_us,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].calls,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].gated, t->notify_calls, MtPortNow;
+          t->notify_calls[j] == \at(t->notify_calls[j], LoopEntry) &&
+          t->notify_gated[j] == \at(t->notify_gated[j], LoopEntry) &&
+          t->notify_last_gen[j] == \at(t->notify_last_gen[j], LoopEntry);
+        loop assigns i, t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow;
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {
         notify_one(t, i);
+        /*@ assert this_one: \let k = i;
+              (t->notify_calls[k] == MtSatInc(\at(t->notify_calls[k], LoopEntry)) &&
+               t->notify_gated[k] == \at(t->notify_gated[k], LoopEntry) &&
+               t->notify_last_gen[k] == t->gen) ||
+              (t->notify_calls[k] == \at(t->notify_calls[k], LoopEntry) &&
+               t->notify_gated[k] == MtSatInc(\at(t->notify_gated[k], LoopEntry)) &&
+               t->notify_last_gen[k] == \at(t->notify_last_gen[k], LoopEntry)); */
     }
 }
 
@@ -390,7 +498,10 @@ mt_status_t mt_topic_publish_i(mt_topic_t *t, const void *msg, uint32_t size)
         return MT_E_BUS_BEHIND;
     }
     put(t, (const uint8_t *)msg);
-    t->publishes = sat_inc(t->publishes);
+    /*@ assert notify_kept: \forall integer i; 0 <= i < MT_CFG_BUS_MAX_NOTIFY ==>
+            t->notify_last_gen[i] == \at(t->notify_last_gen[i], Pre) &&
+            t->notify_calls[i] == \at(t->notify_calls[i], Pre) &&
+            t->notify_gated[i] == \at(t->notify_gated[i], Pre); */
     notify_all(t);
     return MT_OK;
 }
@@ -426,12 +537,12 @@ static uint32_t notify_registered(const mt_topic_t *t, mt_bus_notify_fn_t fn, co
 
     /*@ loop invariant 0 <= i <= t->nnotify;
         loop invariant \forall integer j; 0 <= j < i ==>
-            !(t->notify[j].fn == fn && t->notify[j].arg == arg);
+            !(t->notify_fn[j] == fn && t->notify_arg[j] == arg);
         loop assigns i;
         loop variant t->nnotify - i;
     */
     for (i = 0u; i < t->nnotify; i++) {
-        if ((t->notify[i].fn == fn) && (t->notify[i].arg == arg)) {
+        if ((t->notify_fn[i] == fn) && (t->notify_arg[i] == arg)) {
             return 1u;
         }
     }
@@ -442,29 +553,30 @@ static uint32_t notify_registered(const mt_topic_t *t, mt_bus_notify_fn_t fn, co
 /*@ requires MtTopicInv(t);
     requires fn != \null && min_updates >= 1;
     requires t->nnotify < MT_CFG_BUS_MAX_NOTIFY;
-    assigns t->notify[t->nnotify], t->nnotify;
+    assigns t->notify_fn[t->nnotify], t->notify_arg[t->nnotify], t->notify_min_updates[t->nnotify], t->notify_interval_us[t->nnotify], t->notify_last_gen[t->nnotify], t->notify_last_us[t->nnotify], t->notify_calls[t->nnotify], t->notify_gated[t->nnotify],
+            t->nnotify;
     ensures MtTopicInv(t);
     ensures t->nnotify == \old(t->nnotify) + 1;
-    ensures t->notify[\old(t->nnotify)].fn == fn && t->notify[\old(t->nnotify)].arg == arg &&
-        t->notify[\old(t->nnotify)].min_updates == min_updates &&
-        t->notify[\old(t->nnotify)].interval_us == interval_us &&
-        t->notify[\old(t->nnotify)].last_gen == t->gen &&
-        t->notify[\old(t->nnotify)].calls == 0 && t->notify[\old(t->nnotify)].gated == 0 &&
-        t->notify[\old(t->nnotify)].last_us == 0;
+    ensures t->notify_fn[\old(t->nnotify)] == fn && t->notify_arg[\old(t->nnotify)] == arg &&
+        t->notify_min_updates[\old(t->nnotify)] == min_updates &&
+        t->notify_interval_us[\old(t->nnotify)] == interval_us &&
+        t->notify_last_gen[\old(t->nnotify)] == t->gen &&
+        t->notify_calls[\old(t->nnotify)] == 0 && t->notify_gated[\old(t->nnotify)] == 0 &&
+        t->notify_last_us[\old(t->nnotify)] == 0;
 */
 static void add_notifier(mt_topic_t *t, mt_bus_notify_fn_t fn, void *arg, uint32_t min_updates,
                          uint32_t interval_us)
 {
-    mt_bus_notifier_t *e = &t->notify[t->nnotify];
+    uint32_t n = t->nnotify;
 
-    e->fn = fn;
-    e->arg = arg;
-    e->min_updates = min_updates;
-    e->interval_us = interval_us;
-    e->last_gen = t->gen;
-    e->last_us = 0u;
-    e->calls = 0u;
-    e->gated = 0u;
+    t->notify_fn[n] = fn;
+    t->notify_arg[n] = arg;
+    t->notify_min_updates[n] = min_updates;
+    t->notify_interval_us[n] = interval_us;
+    t->notify_last_gen[n] = t->gen;
+    t->notify_last_us[n] = 0u;
+    t->notify_calls[n] = 0u;
+    t->notify_gated[n] = 0u;
     t->nnotify++;
 }
 
@@ -538,14 +650,19 @@ mt_status_t mt_sub_poll_enable(mt_sub_t *s)
     mt_topic_t *t = s->topic;
     mt_status_t st;
 
+    /* (for WP: the subscriber's fields are not among the topic's pointer columns) */
+    /*@ assert sep: \separated(&s->topic, &s->notify, &s->sem, &s->rel,
+            t->notify_fn + (0 .. MT_CFG_BUS_MAX_NOTIFY - 1),
+            t->notify_arg + (0 .. MT_CFG_BUS_MAX_NOTIFY - 1)); */
     mt_port_lock();
     if (s->notify != 0u) {
         st = MT_E_DUPLICATE;
     } else if (t->nnotify >= MT_CFG_BUS_MAX_NOTIFY) {
         st = MT_E_FULL;
     } else {
-        add_notifier(t, &mt_bus_invoke_wake, &s->sem, 1u, 0u);
-        s->notify = t->nnotify;
+        void *arg = mt_bus_invoke_wake_arg(&s->sem);
+        s->notify = t->nnotify + 1u; /* the slot add_notifier fills, + 1 */
+        add_notifier(t, &mt_bus_invoke_wake, arg, 1u, 0u);
         st = MT_OK;
     }
     mt_port_unlock();
@@ -570,6 +687,7 @@ bool mt_sub_updated(const mt_sub_t *s, uint64_t now_us)
     ensures \result == 0 || \result == 1;
     ensures \result == 1 ==> \forall integer k; 0 <= k < t->size ==>
         out[k] == t->buf[MtSlotBack(head, d, t->qlen) * t->size + k];
+    ensures in_storage: MtSlotBack(head, d, t->qlen) * t->size + t->size <= t->size * t->qlen;
 */
 static uint32_t try_copy(const mt_topic_t *t, uint32_t gen, uint32_t head, uint32_t d,
                          uint8_t *out)
@@ -597,6 +715,9 @@ static uint32_t try_copy(const mt_topic_t *t, uint32_t gen, uint32_t head, uint3
     ensures s->skipped == MtSatAdd(\old(s->skipped), skipped);
     ensures s->received == (fresh == 1 ? MtSatInc(\old(s->received)) : \old(s->received));
     ensures s->rel != 0 ==> s->topic->rel_gen[s->rel - 1] == g;
+    ensures topic_kept: s->topic == \old(s->topic) && s->topic->gen == \old(s->topic->gen) &&
+        s->topic->head == \old(s->topic->head) && s->topic->size == \old(s->topic->size) &&
+        s->topic->qlen == \old(s->topic->qlen) && s->topic->buf == \old(s->topic->buf);
 */
 static void consume(mt_sub_t *s, uint32_t g, uint32_t lost, uint32_t skipped, uint32_t fresh)
 {
@@ -642,6 +763,9 @@ mt_status_t mt_sub_copy_next(mt_sub_t *s, void *out, uint32_t size, uint64_t now
     /*@ loop invariant 0 <= tries <= MT_CFG_BUS_COPY_TRIES;
         loop invariant MtSubInv(s);
         loop invariant s->gen == \at(s->gen, Pre) && s->torn == \at(s->torn, Pre);
+        loop invariant buf_kept: \forall integer k; 0 <= k < s->topic->size * s->topic->qlen ==>
+            s->topic->buf[k] == \at(s->topic->buf[k], Pre);
+        loop invariant looked: tries != 0 ==> s->topic->gen != s->gen;
         loop assigns tries, ((uint8_t *)out)[0 .. size - 1];
         loop variant MT_CFG_BUS_COPY_TRIES - tries;
     */
@@ -655,8 +779,11 @@ mt_status_t mt_sub_copy_next(mt_sub_t *s, void *out, uint32_t size, uint64_t now
             return MT_E_EMPTY;
         }
         /* more than qlen behind: the oldest retained message, qlen - 1 before the newest */
-        d = (pending > t->qlen) ? (t->qlen - 1u) : (pending - 1u);
+        d = next_dist(pending, t->qlen);
         if (try_copy(t, gen, head, d, (uint8_t *)out) != 0u) {
+            /*@ assert got: \forall integer k; 0 <= k < t->size ==>
+                    \let o = MtSlotBack(head, d, t->qlen) * t->size + k;
+                    ((uint8_t *)out)[k] == t->buf[o] && t->buf[o] == \at(s->topic->buf[o], Pre); */
             uint32_t lost = (pending > t->qlen) ? (pending - t->qlen) : 0u;
             consume(s, gen_back(gen, d), lost, 0u, 1u);
             note_update(s, now_us);
@@ -681,6 +808,8 @@ mt_status_t mt_sub_copy_latest(mt_sub_t *s, void *out, uint32_t size, uint64_t n
     /*@ loop invariant 0 <= tries <= MT_CFG_BUS_COPY_TRIES;
         loop invariant MtSubInv(s);
         loop invariant s->gen == \at(s->gen, Pre) && s->torn == \at(s->torn, Pre);
+        loop invariant buf_kept: \forall integer k; 0 <= k < s->topic->size * s->topic->qlen ==>
+            s->topic->buf[k] == \at(s->topic->buf[k], Pre);
         loop assigns tries, ((uint8_t *)out)[0 .. size - 1];
         loop variant MT_CFG_BUS_COPY_TRIES - tries;
     */
@@ -690,6 +819,9 @@ mt_status_t mt_sub_copy_latest(mt_sub_t *s, void *out, uint32_t size, uint64_t n
         uint32_t pending = gen_dist(gen, s->gen);
 
         if (try_copy(t, gen, head, 0u, (uint8_t *)out) != 0u) {
+            /*@ assert got: \forall integer k; 0 <= k < t->size ==>
+                    \let o = MtSlotBack(head, 0, t->qlen) * t->size + k;
+                    ((uint8_t *)out)[k] == t->buf[o] && t->buf[o] == \at(s->topic->buf[o], Pre); */
             /* overwritten before this copy looked: missed; still retained: skipped */
             uint32_t lost = (pending > t->qlen) ? (pending - t->qlen) : 0u;
             uint32_t passed = (pending == 0u) ? 0u : ((pending - 1u) - lost);

@@ -16,3 +16,8 @@ void mt_bus_invoke_wake(void *sem)
 {
     mt_sem_signal_i((mt_sem_t *)sem);
 }
+
+void *mt_bus_invoke_wake_arg(mt_sem_t *sem)
+{
+    return (void *)sem;
+}

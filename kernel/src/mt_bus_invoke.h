@@ -24,7 +24,21 @@
 void mt_bus_invoke_notify(mt_bus_notify_fn_t fn, void *arg);
 
 /** The poll notifier (registered by mt_sub_poll_enable, called only through
- *  mt_bus_invoke_notify): mt_sem_signal_i() on the subscriber's semaphore `sem`. */
+ *  mt_bus_invoke_notify): mt_sem_signal_i() on the subscriber's semaphore `sem`.
+ *  The contract is A1's view of every notifier (nothing of the topic is written; the
+ *  semaphore it signals is outside the bus's contracts); WP never calls it directly. */
+/*@ requires held: MtLocked == 1;
+    assigns MtPortNow;
+    ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
+*/
 void mt_bus_invoke_wake(void *sem);
+
+/** The poll notifier's argument for sem: sem as `void *` (the pointer conversion is done
+ *  here, outside WP's typed memory model). */
+/*@ requires valid: \valid(sem);
+    assigns \nothing;
+    ensures not_null: \result != \null;
+*/
+void *mt_bus_invoke_wake_arg(mt_sem_t *sem);
 
 #endif /* MT_BUS_INVOKE_H */

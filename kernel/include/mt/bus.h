@@ -100,18 +100,6 @@ typedef struct {
                              UINT32_MAX to exercise the wrap) */
 } mt_topic_desc_t;
 
-/** One notifier of a topic (written under the kernel lock). */
-typedef struct {
-    mt_bus_notify_fn_t fn; /**< constant once registered */
-    void *arg;             /**< constant once registered */
-    uint32_t min_updates;  /**< count gate: publications since the last call, >= 1 */
-    uint32_t interval_us;  /**< interval gate: 0 = none */
-    uint32_t last_gen;     /**< topic generation at the last call (or registration) */
-    uint64_t last_us;      /**< interval gate's last-update time */
-    uint32_t calls;        /**< calls made (saturating) */
-    uint32_t gated;        /**< publishes a gate held back (saturating) */
-} mt_bus_notifier_t;
-
 typedef struct {
     /* publisher side: written with the kernel lock held */
     uint32_t gen;                          /**< generation of the newest message (release) */
@@ -121,9 +109,20 @@ typedef struct {
                                                 being overwritten with (seqlock stamp) */
     uint32_t publishes;                    /**< accepted publishes (saturating) */
     uint32_t rejected;                     /**< refused publishes: size, behind (saturating) */
-    uint32_t notify_calls;                 /**< notifier calls made (saturating) */
-    uint32_t nnotify;                      /**< registered notifiers */
-    mt_bus_notifier_t notify[MT_CFG_BUS_MAX_NOTIFY];
+    uint32_t notified;                 /**< notifier calls made (saturating) */
+    /* notifiers, one column per field (WP frames whole columns cheaply); entry i is
+       registered when i < nnotify; fn, arg, min_updates, interval_us constant then */
+    uint32_t nnotify;                                      /**< registered notifiers */
+    mt_bus_notify_fn_t notify_fn[MT_CFG_BUS_MAX_NOTIFY];   /**< callback */
+    void *notify_arg[MT_CFG_BUS_MAX_NOTIFY];               /**< its argument */
+    uint32_t notify_min_updates[MT_CFG_BUS_MAX_NOTIFY];    /**< count gate, >= 1 */
+    uint32_t notify_interval_us[MT_CFG_BUS_MAX_NOTIFY];    /**< interval gate, 0: none */
+    uint32_t notify_last_gen[MT_CFG_BUS_MAX_NOTIFY];       /**< generation at the last call
+                                                                (or registration) */
+    uint64_t notify_last_us[MT_CFG_BUS_MAX_NOTIFY];        /**< interval gate's last update */
+    uint32_t notify_calls[MT_CFG_BUS_MAX_NOTIFY];          /**< calls made (saturating) */
+    uint32_t notify_gated[MT_CFG_BUS_MAX_NOTIFY];          /**< publishes a gate held back
+                                                                (saturating) */
     uint32_t nrel;                         /**< registered reliable subscribers */
     /* subscriber side */
     uint32_t rel_gen[MT_CFG_BUS_MAX_RELIABLE]; /**< generation consumed by reliable
@@ -153,7 +152,7 @@ typedef struct {
 } mt_sub_t;
 
 /* MtTopicBehind: some registered reliable subscriber has not consumed the oldest queued
- * message. MtTopicByte(t, d, k): byte k of the message d messages before the newest. */
+ * message. */
 /*@ predicate MtTopicInv(mt_topic_t *t) =
         \valid(t) &&
         1 <= t->size <= MT_CFG_BUS_MAX_MSG && 1 <= t->qlen <= MT_CFG_BUS_MAX_QUEUE &&
@@ -161,9 +160,7 @@ typedef struct {
         t->nnotify <= MT_CFG_BUS_MAX_NOTIFY && t->nrel <= MT_CFG_BUS_MAX_RELIABLE &&
         (t->reliable == 0 ==> t->nrel == 0) &&
         \valid(t->buf + (0 .. t->size * t->qlen - 1)) &&
-        \separated(t, t->buf + (0 .. t->size * t->qlen - 1)) &&
-        (\forall integer i; 0 <= i < t->nnotify ==>
-            t->notify[i].fn != \null && t->notify[i].min_updates >= 1);
+        \separated(t, t->buf + (0 .. t->size * t->qlen - 1));
 
     predicate MtSubInv(mt_sub_t *s) =
         \valid(s) && MtTopicInv(s->topic) && \separated(s, s->topic) &&
@@ -175,12 +172,10 @@ typedef struct {
         \exists integer i; 0 <= i < t->nrel && MtGenDist(t->gen, t->rel_gen[i]) >= t->qlen;
 
     predicate MtNotifyRegistered(mt_topic_t *t, mt_bus_notify_fn_t fn, void *arg) =
-        \exists integer i; 0 <= i < t->nnotify && t->notify[i].fn == fn && t->notify[i].arg == arg;
+        \exists integer i; 0 <= i < t->nnotify && t->notify_fn[i] == fn && t->notify_arg[i] == arg;
 
     logic integer MtSubPending(mt_sub_t *s) = MtGenDist(s->topic->gen, s->gen);
 
-    logic integer MtTopicByte(mt_topic_t *t, integer d, integer k) =
-        t->buf[MtSlotBack(t->head, d, t->qlen) * t->size + k];
 */
 
 /** Initialise a topic from its description over storage of storage_bytes bytes. [init]
@@ -229,7 +224,7 @@ typedef struct {
                      t->reliable == (d->flags == MT_TOPIC_RELIABLE ? 1 : 0) && t->name == d->name;
       ensures empty: t->gen == d->first_gen && t->published == 0 && t->nnotify == 0 &&
                      t->nrel == 0;
-      ensures stats: t->publishes == 0 && t->rejected == 0 && t->notify_calls == 0;
+      ensures stats: t->publishes == 0 && t->rejected == 0 && t->notified == 0;
     complete behaviors;
     disjoint behaviors;
 */
@@ -247,11 +242,11 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
     requires msg: size == t->size ==> \valid_read((uint8_t *)msg + (0 .. size - 1)) &&
         \separated((uint8_t *)msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
     assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
-            t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notify_calls,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_gen,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_us,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].calls,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].gated, MtPortNow;
+            t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notified,
+            t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow;
     ensures held: MtLocked == 1;
     ensures inv: MtTopicInv(t);
     behavior msg_size:
@@ -281,14 +276,14 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
       ensures counted: t->publishes == MtSatInc(\old(t->publishes)) &&
                        t->rejected == \old(t->rejected);
       ensures notified: \forall integer i; 0 <= i < t->nnotify ==>
-          (t->notify[i].calls == MtSatInc(\old(t->notify[i].calls)) &&
-           t->notify[i].gated == \old(t->notify[i].gated) && t->notify[i].last_gen == t->gen) ||
-          (t->notify[i].calls == \old(t->notify[i].calls) &&
-           t->notify[i].gated == MtSatInc(\old(t->notify[i].gated)) &&
-           t->notify[i].last_gen == \old(t->notify[i].last_gen));
+          (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
+           t->notify_gated[i] == \old(t->notify_gated[i]) && t->notify_last_gen[i] == t->gen) ||
+          (t->notify_calls[i] == \old(t->notify_calls[i]) &&
+           t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
+           t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
       ensures count_gate: \forall integer i; 0 <= i < t->nnotify ==>
-          MtGenDist(t->gen, \old(t->notify[i].last_gen)) < t->notify[i].min_updates ==>
-          t->notify[i].last_gen == \old(t->notify[i].last_gen);
+          MtGenDist(t->gen, \old(t->notify_last_gen[i])) < t->notify_min_updates[i] ==>
+          t->notify_last_gen[i] == \old(t->notify_last_gen[i]);
     complete behaviors;
     disjoint behaviors;
 */
@@ -300,11 +295,11 @@ mt_status_t mt_topic_publish_i(mt_topic_t *t, const void *msg, uint32_t size);
     requires msg: size == t->size ==> \valid_read((uint8_t *)msg + (0 .. size - 1)) &&
         \separated((uint8_t *)msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
     assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
-            t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notify_calls,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_gen,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_us,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].calls,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].gated, MtPortNow, MtLocked;
+            t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notified,
+            t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtTopicInv(t);
     ensures status: \result == MT_OK || \result == MT_E_BUS_MSG_SIZE || \result == MT_E_BUS_BEHIND;
@@ -320,11 +315,11 @@ mt_status_t mt_topic_publish(mt_topic_t *t, const void *msg, uint32_t size);
     requires msg: size == t->size ==> \valid_read((uint8_t *)msg + (0 .. size - 1)) &&
         \separated((uint8_t *)msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
     assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
-            t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notify_calls,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_gen,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].last_us,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].calls,
-            t->notify[0 .. MT_CFG_BUS_MAX_NOTIFY - 1].gated, MtPortNow, MtLocked;
+            t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notified,
+            t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtTopicInv(t);
     ensures status: \result == MT_OK || \result == MT_E_BUS_MSG_SIZE || \result == MT_E_BUS_BEHIND;
@@ -344,7 +339,8 @@ mt_status_t mt_topic_publish_isr(mt_topic_t *t, const void *msg, uint32_t size);
  *  @retval MT_E_FULL MT_CFG_BUS_MAX_NOTIFY notifiers are registered. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtTopicInv(t);
-    assigns t->notify[t->nnotify], t->nnotify, MtLocked;
+    assigns t->notify_fn[t->nnotify], t->notify_arg[t->nnotify], t->notify_min_updates[t->nnotify], t->notify_interval_us[t->nnotify], t->notify_last_gen[t->nnotify], t->notify_last_us[t->nnotify], t->notify_calls[t->nnotify], t->notify_gated[t->nnotify],
+            t->nnotify, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtTopicInv(t);
     behavior invalid:
@@ -365,12 +361,12 @@ mt_status_t mt_topic_publish_isr(mt_topic_t *t, const void *msg, uint32_t size);
       assumes t->nnotify < MT_CFG_BUS_MAX_NOTIFY;
       ensures status: \result == MT_OK;
       ensures appended: t->nnotify == \old(t->nnotify) + 1;
-      ensures entry: t->notify[\old(t->nnotify)].fn == fn && t->notify[\old(t->nnotify)].arg == arg &&
-          t->notify[\old(t->nnotify)].min_updates == min_updates &&
-          t->notify[\old(t->nnotify)].interval_us == interval_us &&
-          t->notify[\old(t->nnotify)].last_gen == t->gen;
-      ensures fresh: t->notify[\old(t->nnotify)].calls == 0 && t->notify[\old(t->nnotify)].gated == 0 &&
-          t->notify[\old(t->nnotify)].last_us == 0;
+      ensures entry: t->notify_fn[\old(t->nnotify)] == fn && t->notify_arg[\old(t->nnotify)] == arg &&
+          t->notify_min_updates[\old(t->nnotify)] == min_updates &&
+          t->notify_interval_us[\old(t->nnotify)] == interval_us &&
+          t->notify_last_gen[\old(t->nnotify)] == t->gen;
+      ensures fresh: t->notify_calls[\old(t->nnotify)] == 0 && t->notify_gated[\old(t->nnotify)] == 0 &&
+          t->notify_last_us[\old(t->nnotify)] == 0;
     complete behaviors;
     disjoint behaviors;
 */
@@ -432,7 +428,8 @@ mt_status_t mt_sub_reliable(mt_sub_t *s);
  *  @retval MT_E_FULL the topic has MT_CFG_BUS_MAX_NOTIFY notifiers. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtSubInv(s);
-    assigns s->notify, s->topic->notify[s->topic->nnotify], s->topic->nnotify, MtLocked;
+    assigns s->notify, s->topic->notify_fn[s->topic->nnotify], s->topic->notify_arg[s->topic->nnotify], s->topic->notify_min_updates[s->topic->nnotify], s->topic->notify_interval_us[s->topic->nnotify], s->topic->notify_last_gen[s->topic->nnotify], s->topic->notify_last_us[s->topic->nnotify], s->topic->notify_calls[s->topic->nnotify], s->topic->notify_gated[s->topic->nnotify],
+            s->topic->nnotify, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtSubInv(s);
     behavior duplicate:
@@ -447,9 +444,9 @@ mt_status_t mt_sub_reliable(mt_sub_t *s);
       assumes s->notify == 0 && s->topic->nnotify < MT_CFG_BUS_MAX_NOTIFY;
       ensures status: \result == MT_OK;
       ensures registered: s->topic->nnotify == \old(s->topic->nnotify) + 1 &&
-          s->notify == s->topic->nnotify && s->topic->notify[s->notify - 1].arg == &s->sem &&
-          s->topic->notify[s->notify - 1].min_updates == 1 &&
-          s->topic->notify[s->notify - 1].interval_us == 0;
+          s->notify == s->topic->nnotify && s->topic->notify_arg[s->notify - 1] != \null &&
+          s->topic->notify_min_updates[s->notify - 1] == 1 &&
+          s->topic->notify_interval_us[s->notify - 1] == 0;
     complete behaviors;
     disjoint behaviors;
 */
@@ -501,7 +498,9 @@ bool mt_sub_updated(const mt_sub_t *s, uint64_t now_us);
           s->last_us == MtClampNext(\old(s->last_us), s->interval_us, now_us) &&
           (s->rel != 0 ==> s->topic->rel_gen[s->rel - 1] == s->gen);
       ensures data: \result == MT_OK ==> \forall integer k; 0 <= k < s->topic->size ==>
-          ((uint8_t *)out)[k] == MtTopicByte(s->topic, MtSubPending(s), k);
+          ((uint8_t *)out)[k] == \old(s->topic->buf[MtSlotBack(s->topic->head,
+              MtNextDist(MtGenDist(s->topic->gen, s->gen), s->topic->qlen), s->topic->qlen) *
+              s->topic->size + k]);
       ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
           s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
     behavior lapped:
@@ -515,7 +514,9 @@ bool mt_sub_updated(const mt_sub_t *s, uint64_t now_us);
       ensures missed_exact: \result == MT_W_BUS_MISSED ==>
           s->missed == MtSatAdd(\old(s->missed), \old(MtSubPending(s)) - s->topic->qlen);
       ensures data: \result == MT_W_BUS_MISSED ==> \forall integer k; 0 <= k < s->topic->size ==>
-          ((uint8_t *)out)[k] == MtTopicByte(s->topic, s->topic->qlen - 1, k);
+          ((uint8_t *)out)[k] == \old(s->topic->buf[MtSlotBack(s->topic->head,
+              MtNextDist(MtGenDist(s->topic->gen, s->gen), s->topic->qlen), s->topic->qlen) *
+              s->topic->size + k]);
       ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
           s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
     complete behaviors;
@@ -560,7 +561,8 @@ mt_status_t mt_sub_copy_next(mt_sub_t *s, void *out, uint32_t size, uint64_t now
           s->last_us == MtClampNext(\old(s->last_us), s->interval_us, now_us) &&
           (s->rel != 0 ==> s->topic->rel_gen[s->rel - 1] == s->gen);
       ensures data: \result == MT_OK ==> \forall integer k; 0 <= k < s->topic->size ==>
-          ((uint8_t *)out)[k] == MtTopicByte(s->topic, 0, k);
+          ((uint8_t *)out)[k] == \old(s->topic->buf[MtSlotBack(s->topic->head, 0, s->topic->qlen) *
+                                                     s->topic->size + k]);
       ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
           s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
     behavior lapped:
@@ -575,7 +577,8 @@ mt_status_t mt_sub_copy_next(mt_sub_t *s, void *out, uint32_t size, uint64_t now
       ensures missed_exact: \result == MT_W_BUS_MISSED ==>
           s->missed == MtSatAdd(\old(s->missed), \old(MtSubPending(s)) - s->topic->qlen);
       ensures data: \result == MT_W_BUS_MISSED ==> \forall integer k; 0 <= k < s->topic->size ==>
-          ((uint8_t *)out)[k] == MtTopicByte(s->topic, 0, k);
+          ((uint8_t *)out)[k] == \old(s->topic->buf[MtSlotBack(s->topic->head, 0, s->topic->qlen) *
+                                                     s->topic->size + k]);
       ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
           s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
     complete behaviors;
