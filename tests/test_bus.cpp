@@ -118,7 +118,7 @@ TEST(BusInit, EveryStatus)
     EXPECT_EQ(t.published, 0u);
     EXPECT_EQ(t.gen, 0u);
     EXPECT_EQ(t.nnotify, 0u);
-    EXPECT_EQ(t.publishes + t.rejected + t.notify_calls, 0u);
+    EXPECT_EQ(t.publishes + t.rejected + t.notified, 0u);
     EXPECT_STREQ(t.name, "t");
 
     d.flags = MT_TOPIC_RELIABLE;
@@ -483,10 +483,10 @@ TEST(BusNotify, RegistrationStatusesAndBound)
     ASSERT_EQ(tp.pub(1u), MT_OK);
     for (uint32_t k = 0u; k < MT_CFG_BUS_MAX_NOTIFY; ++k) {
         EXPECT_EQ(c[k].calls.load(), 1);
-        EXPECT_EQ(tp.t.notify[k].calls, 1u);
+        EXPECT_EQ(tp.t.notify_calls[k], 1u);
     }
     EXPECT_EQ(c[MT_CFG_BUS_MAX_NOTIFY].calls.load(), 0);
-    EXPECT_EQ(tp.t.notify_calls, MT_CFG_BUS_MAX_NOTIFY);
+    EXPECT_EQ(tp.t.notified, MT_CFG_BUS_MAX_NOTIFY);
     // a refused publish calls nobody
     const Msg m = make_msg(2u);
     EXPECT_EQ(mt_topic_publish(&tp.t, &m, 1u), MT_E_BUS_MSG_SIZE);
@@ -503,9 +503,9 @@ TEST(BusNotify, CountGateCallsEveryNthPublish)
         ASSERT_EQ(tp.pub(k), MT_OK);
         EXPECT_EQ(c.calls.load(), static_cast<int>(k / 3u)) << k;
     }
-    EXPECT_EQ(tp.t.notify[0].calls, 3u);
-    EXPECT_EQ(tp.t.notify[0].gated, 7u);  // every publish that did not call is counted
-    EXPECT_EQ(tp.t.notify[0].calls + tp.t.notify[0].gated, tp.t.publishes);
+    EXPECT_EQ(tp.t.notify_calls[0], 3u);
+    EXPECT_EQ(tp.t.notify_gated[0], 7u);  // every publish that did not call is counted
+    EXPECT_EQ(tp.t.notify_calls[0] + tp.t.notify_gated[0], tp.t.publishes);
 }
 
 using BusNotifySim = SimTime;
@@ -520,20 +520,20 @@ TEST_F(BusNotifySim, IntervalGateHoldsBackUntilTheIntervalPassed)
     ASSERT_EQ(tp.pub(1u), MT_OK);  // sim time 1 s: long after last_us 0
     EXPECT_EQ(c.calls.load(), 1);
     const uint64_t t0 = mt_port_now_us();
-    EXPECT_EQ(tp.t.notify[0].last_us, t0 - kIv);  // clamped to now - interval
+    EXPECT_EQ(tp.t.notify_last_us[0], t0 - kIv);  // clamped to now - interval
     mt_posix_sim_advance(1u);
     ASSERT_EQ(tp.pub(2u), MT_OK);  // the one catch-up call uORB's rule allows
     EXPECT_EQ(c.calls.load(), 2);
-    EXPECT_EQ(tp.t.notify[0].last_us, t0);
+    EXPECT_EQ(tp.t.notify_last_us[0], t0);
     mt_posix_sim_advance(kIv - 2u);
     ASSERT_EQ(tp.pub(3u), MT_OK);  // kIv - 1 after the last update: held back
     EXPECT_EQ(c.calls.load(), 2);
-    EXPECT_EQ(tp.t.notify[0].gated, 1u);
+    EXPECT_EQ(tp.t.notify_gated[0], 1u);
     mt_posix_sim_advance(1u);
     ASSERT_EQ(tp.pub(4u), MT_OK);
     EXPECT_EQ(c.calls.load(), 3);
-    EXPECT_EQ(tp.t.notify[0].last_us, t0 + kIv);
-    EXPECT_EQ(tp.t.notify[0].calls + tp.t.notify[0].gated, 4u);
+    EXPECT_EQ(tp.t.notify_last_us[0], t0 + kIv);
+    EXPECT_EQ(tp.t.notify_calls[0] + tp.t.notify_gated[0], 4u);
 }
 
 // ------------------------------------------------------------------------ reliable

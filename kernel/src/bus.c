@@ -389,12 +389,11 @@ static void put(mt_topic_t *t, const uint8_t *msg)
     ensures MtTopicInv(t);
     ensures step: (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
                    t->notify_gated[i] == \old(t->notify_gated[i]) &&
-                   t->notify_last_gen[i] == t->gen) ||
+                   t->notify_last_gen[i] == t->gen &&
+                   MtGenDist(t->gen, \old(t->notify_last_gen[i])) >= t->notify_min_updates[i]) ||
                   (t->notify_calls[i] == \old(t->notify_calls[i]) &&
                    t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
                    t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
-    ensures count_gate: MtGenDist(t->gen, \old(t->notify_last_gen[i])) < t->notify_min_updates[i] ==>
-        t->notify_last_gen[i] == \old(t->notify_last_gen[i]);
     ensures gen_kept: t->gen == \old(t->gen);
     ensures others: \forall integer j; 0 <= j < MT_CFG_BUS_MAX_NOTIFY && j != i ==>
         t->notify_last_gen[j] == \old(t->notify_last_gen[j]) &&
@@ -438,13 +437,11 @@ static void notify_one(mt_topic_t *t, uint32_t i)
     ensures MtTopicInv(t);
     ensures notified: \forall integer i; 0 <= i < t->nnotify ==>
           (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
-           t->notify_gated[i] == \old(t->notify_gated[i]) && t->notify_last_gen[i] == t->gen) ||
+           t->notify_gated[i] == \old(t->notify_gated[i]) && t->notify_last_gen[i] == t->gen &&
+           MtGenDist(t->gen, \old(t->notify_last_gen[i])) >= t->notify_min_updates[i]) ||
           (t->notify_calls[i] == \old(t->notify_calls[i]) &&
            t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
            t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
-    ensures count_gate: \forall integer i; 0 <= i < t->nnotify ==>
-          MtGenDist(t->gen, \old(t->notify_last_gen[i])) < t->notify_min_updates[i] ==>
-          t->notify_last_gen[i] == \old(t->notify_last_gen[i]);
     ensures kept: t->gen == \old(t->gen) && t->nnotify == \old(t->nnotify) &&
           (\forall integer i; 0 <= i < MT_CFG_BUS_MAX_NOTIFY ==>
               t->notify_min_updates[i] == \old(t->notify_min_updates[i]));
@@ -458,13 +455,11 @@ static void notify_all(mt_topic_t *t)
         loop invariant MtTopicInv(t);
         loop invariant done: \forall integer j; 0 <= j < i ==>
           (t->notify_calls[j] == MtSatInc(\at(t->notify_calls[j], LoopEntry)) &&
-           t->notify_gated[j] == \at(t->notify_gated[j], LoopEntry) && t->notify_last_gen[j] == t->gen) ||
+           t->notify_gated[j] == \at(t->notify_gated[j], LoopEntry) && t->notify_last_gen[j] == t->gen &&
+           MtGenDist(t->gen, \at(t->notify_last_gen[j], LoopEntry)) >= t->notify_min_updates[j]) ||
           (t->notify_calls[j] == \at(t->notify_calls[j], LoopEntry) &&
            t->notify_gated[j] == MtSatInc(\at(t->notify_gated[j], LoopEntry)) &&
            t->notify_last_gen[j] == \at(t->notify_last_gen[j], LoopEntry));
-        loop invariant gate: \forall integer j; 0 <= j < i ==>
-          MtGenDist(t->gen, \at(t->notify_last_gen[j], LoopEntry)) < t->notify_min_updates[j] ==>
-          t->notify_last_gen[j] == \at(t->notify_last_gen[j], LoopEntry);
         loop invariant rest: \forall integer j; i <= j < MT_CFG_BUS_MAX_NOTIFY ==>
           t->notify_calls[j] == \at(t->notify_calls[j], LoopEntry) &&
           t->notify_gated[j] == \at(t->notify_gated[j], LoopEntry) &&
@@ -480,7 +475,8 @@ static void notify_all(mt_topic_t *t)
         /*@ assert this_one: \let k = i;
               (t->notify_calls[k] == MtSatInc(\at(t->notify_calls[k], LoopEntry)) &&
                t->notify_gated[k] == \at(t->notify_gated[k], LoopEntry) &&
-               t->notify_last_gen[k] == t->gen) ||
+               t->notify_last_gen[k] == t->gen &&
+               MtGenDist(t->gen, \at(t->notify_last_gen[k], LoopEntry)) >= t->notify_min_updates[k]) ||
               (t->notify_calls[k] == \at(t->notify_calls[k], LoopEntry) &&
                t->notify_gated[k] == MtSatInc(\at(t->notify_gated[k], LoopEntry)) &&
                t->notify_last_gen[k] == \at(t->notify_last_gen[k], LoopEntry)); */

@@ -277,13 +277,11 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
                        t->rejected == \old(t->rejected);
       ensures notified: \forall integer i; 0 <= i < t->nnotify ==>
           (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
-           t->notify_gated[i] == \old(t->notify_gated[i]) && t->notify_last_gen[i] == t->gen) ||
+           t->notify_gated[i] == \old(t->notify_gated[i]) && t->notify_last_gen[i] == t->gen &&
+           MtGenDist(t->gen, \old(t->notify_last_gen[i])) >= t->notify_min_updates[i]) ||
           (t->notify_calls[i] == \old(t->notify_calls[i]) &&
            t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
            t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
-      ensures count_gate: \forall integer i; 0 <= i < t->nnotify ==>
-          MtGenDist(t->gen, \old(t->notify_last_gen[i])) < t->notify_min_updates[i] ==>
-          t->notify_last_gen[i] == \old(t->notify_last_gen[i]);
     complete behaviors;
     disjoint behaviors;
 */
