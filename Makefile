@@ -19,7 +19,8 @@ WARN_CXX   := -std=c++17 -Wall -Wextra -Wshadow -Werror
 
 help:
 	@echo "make            build the kernel and host port with gcc and clang (warnings are errors)"
-	@echo "make test       install test deps, run the googletest suite: gcc, clang, ASan, UBSan, TSan"
+	@echo "make test       install test deps, run the googletest suite: gcc, clang, ASan, UBSan, TSan;"
+	@echo "                mt-mission over the mission files; the vehicle tests (make test-vehicle)"
 	@echo "make cross      build the kernel for Cortex-M4 and print sizes per module"
 	@echo "make lint       cppcheck (MISRA C:2012 addon) and clang-tidy over kernel/"
 	@echo "make demo       run a task table on the host port and print its statistics"
@@ -27,6 +28,9 @@ help:
 	@echo "make mission-tool   build/mt-mission (check QGC WPL 110 mission files, print the plan)"
 	@echo "make test-mission   mission tests (gcc, ASan+UBSan) and mt-mission over tests/missions"
 	@echo "make fuzz           libFuzzer targets (clang, ASan+UBSan), short run (FUZZ_SECONDS)"
+	@echo "make sitl [MISSION=vehicle/missions/<file>.waypoints] [SITL_ARGS=...]   fly the example vehicle"
+	@echo "make sched-check    Z3: is the vehicle's task table (vehicle/tasks.def) schedulable?"
+	@echo "make test-vehicle   SITL flights, fault injection, bad missions, sched-check vs SITL"
 
 # ---------------------------------------------------------------- host builds
 # $(call host_lib,NAME,CC,EXTRA_CFLAGS)
@@ -91,6 +95,7 @@ test: deps-test
 	    $(BUILD)/$$v/mt_tests --gtest_brief=1; \
 	done
 	@$(MAKE) --no-print-directory test-mission-tool
+	@$(MAKE) --no-print-directory test-vehicle
 
 test-fast: $(BUILD)/gcc/mt_tests
 	$(BUILD)/gcc/mt_tests
@@ -138,6 +143,7 @@ clean:
 -include tla/tla.mk
 -include bench/bench.mk
 -include hal_chibios/mk/targets.mk
+-include vehicle/vehicle.mk
 
 # ---------------------------------------------------------------- mission (sequencer, files, tool)
 MISSION_HOST_SRC := $(wildcard tools/mission/wpl.c tools/mission/report.c)

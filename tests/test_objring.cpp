@@ -472,6 +472,7 @@ void differential(uint32_t cap, uint32_t elem, uint64_t seed, uint32_t ops)
             break;
         }
         }
+        ASSERT_TRUE(mt_oring_valid(&r));
         ASSERT_EQ(r.lost, m.lost);
         ASSERT_EQ(r.rejected, m.rejected);
         ASSERT_LT(r.head, 2u * (cap + 1u));
@@ -485,6 +486,38 @@ void differential(uint32_t cap, uint32_t elem, uint64_t seed, uint32_t ops)
     EXPECT_GE(drops, 3u) << "cap " << cap;
     EXPECT_GE(m.lost, 1u) << "cap " << cap;
     EXPECT_GE(head_wraps, 3u) << "cap " << cap;
+}
+
+// mt_oring_valid is the C twin of MtORingInv (equivalence proved by WP and CBMC).
+TEST(ObjRingValid, EachBrokenRelationIsReported)
+{
+    alignas(8) uint8_t storage[MT_ORING_STORAGE_BYTES(4u, 3u)];
+    mt_oring_t r;
+    ASSERT_EQ(mt_oring_init(&r, storage, 4u, 3u), MT_OK);
+    EXPECT_TRUE(mt_oring_valid(&r));
+    const mt_oring_t good = r;
+    r.slots = r.cap;
+    EXPECT_FALSE(mt_oring_valid(&r)) << "slots != cap + 1";
+    r = good;
+    r.elem = 0u;
+    EXPECT_FALSE(mt_oring_valid(&r)) << "element size 0";
+    r = good;
+    r.elem = MT_ORING_BYTES_MAX;
+    EXPECT_FALSE(mt_oring_valid(&r)) << "storage above MT_ORING_BYTES_MAX";
+    r = good;
+    r.cap = 0xFFFFFFFFu;
+    r.slots = 0u;
+    EXPECT_FALSE(mt_oring_valid(&r)) << "cap + 1 wraps";
+    r = good;
+    r.head = 2u * r.slots;
+    EXPECT_FALSE(mt_oring_valid(&r)) << "head outside [0, 2 slots)";
+    r = good;
+    r.tail = 2u;
+    r.tail_cache = 1u;  // the consumer's cached tail may lag behind the real one
+    r.head_cache = 0u;
+    EXPECT_TRUE(mt_oring_valid(&r));
+    r.tail_cache = 3u;  // consumer's cached tail ahead of the real one
+    EXPECT_FALSE(mt_oring_valid(&r)) << "consumer's cached tail ahead of the data";
 }
 
 TEST(ObjRingDifferential, AgainstReferenceModel)

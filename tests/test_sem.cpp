@@ -18,6 +18,22 @@ using mt_test::wait_until;
 
 constexpr uint64_t kThreeHoursUs = 3ull * 3600ull * 1000000ull;
 
+// mt_sem_valid is the C twin of MtSemInv (equivalence proved by WP and CBMC).
+TEST(SemValid, TokenAndWaiterRule)
+{
+    mt_sem_t s;
+    int parked = 0;
+    mt_sem_init(&s, true);
+    EXPECT_TRUE(mt_sem_valid(&s));
+    s.waiter = static_cast<mt_port_tref_t>(static_cast<void *>(&parked));
+    EXPECT_FALSE(mt_sem_valid(&s)) << "a token and a parked waiter";
+    s.token = 0u;
+    EXPECT_TRUE(mt_sem_valid(&s));
+    s.token = 2u;
+    s.waiter = nullptr;
+    EXPECT_FALSE(mt_sem_valid(&s)) << "token above 1";
+}
+
 TEST(Sem, InitAvailableAndTaken)
 {
     mt_sem_t s;

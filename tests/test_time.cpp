@@ -29,6 +29,19 @@ TEST(TimeExtInit, Statuses)
     EXPECT_EQ(t.last_hw, 0xFFFFFFFFu);
 }
 
+// mt_time_ext_valid is the C twin of MtTimeExtInv (equivalence proved by WP and CBMC).
+TEST(TimeExtValid, MaximumAndLastReading)
+{
+    mt_time_ext_t t;
+    ASSERT_EQ(mt_time_ext_init(&t, 0xFFFFu, 0xFFFFu), MT_OK);
+    EXPECT_TRUE(mt_time_ext_valid(&t));
+    t.last_hw = 0x10000u;
+    EXPECT_FALSE(mt_time_ext_valid(&t)) << "last reading above the maximum";
+    t.hw_max = 0u;
+    t.last_hw = 0u;
+    EXPECT_FALSE(mt_time_ext_valid(&t)) << "maximum 0";
+}
+
 TEST(TimeExtend, NoWrap)
 {
     mt_time_ext_t t;

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tools/bootstrap.sh — install and verify the Metronome toolchain.
 #
-#   tools/bootstrap.sh {test|cross|lint|prove|qemu|bench|all} ...
+#   tools/bootstrap.sh {test|cross|lint|prove|qemu|bench|sched|all} ...
 #
 # Idempotent: installs only what is missing (apt-get update runs only when an install is
 # needed), quiet on success, and ends with one line per tool and its version. Private tools
@@ -397,15 +397,28 @@ do_bench() {
     record valgrind "$(first_line valgrind --version)"
 }
 
+# ---------------------------------------------------------------------------------------------
+# sched: the schedulability check (tools/sched_check.py: Python 3 with the Z3 bindings)
+# ---------------------------------------------------------------------------------------------
+do_sched() {
+    apt_ensure python3 python3-z3
+    # python3-z3 serves Debian's own interpreter; the Makefile runs the tool with it
+    # (a python3 earlier in PATH, e.g. a pyenv shim, would not see the package).
+    /usr/bin/python3 -c 'import z3' >/dev/null 2>&1 ||
+        die "/usr/bin/python3 cannot import z3 (package python3-z3)"
+    record python3 "$(first_line /usr/bin/python3 --version) (/usr/bin/python3)"
+    record python3-z3 "python3-z3 $(pkg_version python3-z3) (z3 $(/usr/bin/python3 -c 'import z3; print(z3.get_version_string())'))"
+}
+
 usage() {
-    printf 'usage: %s {test|cross|lint|prove|qemu|bench|all} ...\n' "$0" >&2
+    printf 'usage: %s {test|cross|lint|prove|qemu|bench|sched|all} ...\n' "$0" >&2
     exit 2
 }
 
 [ "$#" -ge 1 ] || usage
 for cmd in "$@"; do
     case "$cmd" in
-        test | cross | lint | prove | qemu | bench) ;;
+        test | cross | lint | prove | qemu | bench | sched) ;;
         all) ;;
         *) usage ;;
     esac
@@ -418,7 +431,8 @@ for cmd in "$@"; do
         prove) do_prove ;;
         qemu) do_qemu ;;
         bench) do_bench ;;
-        all) do_test; do_cross; do_lint; do_prove; do_qemu; do_bench ;;
+        sched) do_sched ;;
+        all) do_test; do_cross; do_lint; do_prove; do_qemu; do_bench; do_sched ;;
     esac
 done
 

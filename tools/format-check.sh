@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tools/format-check.sh — check C/C++ formatting against the repository's .clang-format.
 #
-#   tools/format-check.sh          check kernel/, hal_posix/, tests/ (fails on any difference)
+#   tools/format-check.sh          check kernel/, hal_posix/, tests/, vehicle/ (fails on any difference)
 #   tools/format-check.sh --fix    reformat those files in place
 #   tools/format-check.sh [--fix] FILE...   only the given files
 #
@@ -28,7 +28,7 @@ if [ "${#args[@]}" -gt 0 ]; then
     files=("${args[@]}")
 else
     dirs=()
-    for d in kernel hal_posix tests; do
+    for d in kernel hal_posix tests vehicle; do
         [ -d "$d" ] && dirs+=("$d")
     done
     if [ "${#dirs[@]}" -gt 0 ]; then

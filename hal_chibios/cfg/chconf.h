@@ -20,7 +20,12 @@
 #if !defined(CH_CFG_ST_RESOLUTION)
 #define CH_CFG_ST_RESOLUTION                32
 #endif
+/* Tick rate: 1 kHz; an app may raise it with -D (both C and assembler, see
+ * mk/firmware.mk): the vehicle uses 2 kHz so that its 400 Hz samples fall on
+ * tick edges. */
+#if !defined(CH_CFG_ST_FREQUENCY)
 #define CH_CFG_ST_FREQUENCY                 1000
+#endif
 #if !defined(CH_CFG_INTERVALS_SIZE)
 #define CH_CFG_INTERVALS_SIZE               32
 #endif

@@ -4,6 +4,7 @@
 # (make runs from the repository root; $(BUILD) defaults to build).
 #
 #   make firmware   CHIBIOS=/path/to/ChibiOS [BOARD=qemu-mps2-an386|stm32f407-discovery] [APP=smoke]
+#                   (APP=vehicle: the example vehicle, vehicle/deploy/chibios/)
 #   make qemu-smoke CHIBIOS=/path/to/ChibiOS
 #   make chibios-prove                 WP + CBMC proofs of the port's time arithmetic
 #
@@ -22,7 +23,8 @@ ifeq ($(strip $(CHIBIOS)),)
 else
 	@tools/bootstrap.sh cross
 	@$(MAKE) --no-print-directory -f hal_chibios/mk/firmware.mk -j$(NPROC) CHIBIOS="$(CHIBIOS)" \
-	    BUILD="$(BUILD)" BOARD="$(or $(BOARD),qemu-mps2-an386)" APP="$(or $(APP),smoke)"
+	    BUILD="$(BUILD)" BOARD="$(or $(BOARD),qemu-mps2-an386)" APP="$(or $(APP),smoke)" \
+	    $(if $(filter vehicle,$(APP)),APPDIR="$(CURDIR)/vehicle/deploy/chibios")
 endif
 
 qemu-smoke:

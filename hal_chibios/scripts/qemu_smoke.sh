@@ -11,10 +11,15 @@
 #   smoke-fail2    FAIL=2: a task executes an undefined instruction
 #   smoke-wrap32   the RT system time starts 2 s before its 32-bit wrap
 #   smoke-wrap16   16-bit system time, starting 2 s before its wrap
+#   vehicle        the example vehicle (vehicle/deploy/chibios) with its built-in mission
+#   vehicle-fail   FAIL=1: the mission has a jump to a command that does not exist
 # Runs each under qemu-system-arm -icount shift=5 with a timeout, and checks:
 # smoke twice with exit 0 and byte-identical UART output; both wrap builds
 # exit 0; FAIL=1 exits non-zero with "RESULT: FAIL"; FAIL=2 exits non-zero
-# with "FAULT:"; no run hits the timeout. Without CHIBIOS it skips (exit 0).
+# with "FAULT:"; the vehicle completes its mission (exit 0, "RESULT: PASS") and
+# starts the same commands in the same order as SITL flying the same mission;
+# the vehicle with the bad mission never arms and exits non-zero; no run hits
+# the timeout. Without CHIBIOS it skips (exit 0).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -26,6 +31,7 @@ esac
 BOARD=qemu-mps2-an386
 OUT="$BUILD/fw/$BOARD"
 QEMU_TIMEOUT="${QEMU_TIMEOUT:-60}"
+VEHICLE_TIMEOUT="${VEHICLE_TIMEOUT:-300}" # about 65 s of flight: 25-60 s of QEMU wall time
 JOBS="$(nproc 2>/dev/null || echo 2)"
 
 if [ -z "${CHIBIOS:-}" ]; then
@@ -36,13 +42,14 @@ fi
 fail=0
 bad() { printf 'qemu-smoke: FAIL: %s\n' "$*"; fail=1; }
 
-build() { # variant [make args...]
+build() { # variant [make args...]; APP_NAME/APP_DIR select another app than smoke
     local variant=$1 log
     shift
     mkdir -p "$OUT"
     log="$OUT/$variant.build.log"
     if ! make --no-print-directory -C "$ROOT" -f hal_chibios/mk/firmware.mk -j"$JOBS" \
-            CHIBIOS="$CHIBIOS" BUILD="$BUILD" BOARD="$BOARD" APP=smoke VARIANT="$variant" "$@" \
+            CHIBIOS="$CHIBIOS" BUILD="$BUILD" BOARD="$BOARD" APP="${APP_NAME:-smoke}" \
+            ${APP_DIR:+APPDIR="$APP_DIR"} VARIANT="$variant" "$@" \
             >"$log" 2>&1; then
         tail -n 30 "$log"
         bad "build $variant (log: $log)"
@@ -56,18 +63,18 @@ build() { # variant [make args...]
     printf 'size %-13s %s\n' "$variant" "$(sed -n 's/^ *without .heap: //p' "$log")"
 }
 
-# run variant tag: runs the image, output in $OUT/<variant>.<tag>.txt;
+# run variant tag [app [timeout]]: runs the image, output in $OUT/<variant>.<tag>.txt;
 # sets RC and SECS.
 run() {
-    local t0 t1
+    local t0 t1 limit="${4:-$QEMU_TIMEOUT}"
     t0=$(date +%s%N)
     RC=0
-    timeout "$QEMU_TIMEOUT" qemu-system-arm -M mps2-an386 -display none -monitor none \
+    timeout "$limit" qemu-system-arm -M mps2-an386 -display none -monitor none \
         -serial stdio -semihosting-config enable=on,target=native -icount shift=5 \
-        -kernel "$OUT/$1/smoke.elf" >"$OUT/$1.$2.txt" 2>&1 || RC=$?
+        -kernel "$OUT/$1/${3:-smoke}.elf" >"$OUT/$1.$2.txt" 2>&1 || RC=$?
     t1=$(date +%s%N)
     SECS="$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", (b - a) / 1e9 }')"
-    [ "$RC" -ne 124 ] || bad "$1 ($2) hit the ${QEMU_TIMEOUT} s timeout"
+    [ "$RC" -ne 124 ] || bad "$1 ($2) hit the ${limit} s timeout"
 }
 
 build smoke || true
@@ -75,6 +82,8 @@ build smoke-fail FAIL=1 || true
 build smoke-fail2 FAIL=2 || true
 build smoke-wrap32 EXTRA_DEFS="-DMT_PORT_CHIBIOS_ST_OFFSET=0xFFFFF830" || true
 build smoke-wrap16 EXTRA_DEFS="-DCH_CFG_ST_RESOLUTION=16 -DCH_CFG_INTERVALS_SIZE=16 -DMT_PORT_CHIBIOS_ST_OFFSET=0xF830" || true
+APP_NAME=vehicle APP_DIR="$ROOT/vehicle/deploy/chibios" build vehicle || true
+APP_NAME=vehicle APP_DIR="$ROOT/vehicle/deploy/chibios" build vehicle-fail FAIL=1 || true
 [ "$fail" -eq 0 ] || { echo "qemu-smoke: FAILED (build)"; exit 1; }
 
 run smoke run1
@@ -107,6 +116,41 @@ run smoke-fail2 run1
 echo "qemu-smoke: smoke-fail2 (FAIL=2) exit $RC: $(grep -a 'FAULT' "$OUT/smoke-fail2.run1.txt" | tr -d '\r')"
 [ "$RC" -ne 0 ] || bad "FAIL=2 exited 0 (expected non-zero)"
 grep -aq 'FAULT:' "$OUT/smoke-fail2.run1.txt" || bad "FAIL=2 did not report a fault"
+
+# ---- the example vehicle: the built-in mission, flown on ChibiOS ----
+run vehicle run1 vehicle "$VEHICLE_TIMEOUT"
+tr -d '\r' <"$OUT/vehicle.run1.txt" >"$OUT/vehicle.run1.log"
+sed -n '/== flight summary ==/,$p' "$OUT/vehicle.run1.log"
+echo "qemu-smoke: vehicle exit $RC, QEMU wall time ${SECS} s"
+[ "$RC" -eq 0 ] || bad "vehicle exit status $RC (expected 0)"
+grep -q '^RESULT: PASS' "$OUT/vehicle.run1.log" || bad "vehicle did not report RESULT: PASS"
+grep -q '^mission: COMPLETE' "$OUT/vehicle.run1.log" || bad "vehicle mission not complete"
+# the same vehicle in SITL, same mission: the same commands in the same order
+if make --no-print-directory -C "$ROOT" BUILD="$BUILD" "$BUILD/sitl/metronome-sitl" \
+        >"$OUT/sitl.build.log" 2>&1; then
+    "$BUILD/sitl/metronome-sitl" --quiet --builtin >"$OUT/vehicle.sitl.log" 2>/dev/null || true
+    seq_of() { sed -n 's/^\[ *[0-9.]*\] mission: \(#[0-9]* [A-Z_]*\) started.*/\1/p' "$1" | tr '\n' ' '; }
+    fw_seq="$(seq_of "$OUT/vehicle.run1.log")"
+    sitl_seq="$(seq_of "$OUT/vehicle.sitl.log")"
+    echo "qemu-smoke: vehicle commands started: $fw_seq"
+    if [ -n "$fw_seq" ] && [ "$fw_seq" = "$sitl_seq" ]; then
+        echo "qemu-smoke: vehicle: the same command sequence as SITL (--builtin)"
+    else
+        bad "vehicle command sequence differs from SITL: [$fw_seq] vs [$sitl_seq]"
+    fi
+else
+    tail -n 20 "$OUT/sitl.build.log"
+    bad "SITL build for the comparison"
+fi
+
+run vehicle-fail run1 vehicle "$VEHICLE_TIMEOUT"
+tr -d '\r' <"$OUT/vehicle-fail.run1.txt" >"$OUT/vehicle-fail.run1.log"
+echo "qemu-smoke: vehicle-fail (FAIL=1) exit $RC: $(grep -a -E '^mission rejected|^RESULT' "$OUT/vehicle-fail.run1.log" | tr '\n' ' ')"
+[ "$RC" -ne 0 ] || bad "vehicle FAIL=1 exited 0 (expected non-zero)"
+grep -q '^mission rejected by the sequencer: MT_E_MISSION_JUMP' "$OUT/vehicle-fail.run1.log" ||
+    bad "vehicle FAIL=1: no rejection of the mission"
+! grep -q 'vehicle: armed' "$OUT/vehicle-fail.run1.log" || bad "vehicle FAIL=1 armed"
+grep -q '^RESULT: FAIL' "$OUT/vehicle-fail.run1.log" || bad "vehicle FAIL=1 did not report RESULT: FAIL"
 
 if [ "$fail" -ne 0 ]; then
     echo "qemu-smoke: FAILED"

@@ -7,12 +7,23 @@
 #ifndef MT_RING_IDX_H
 #define MT_RING_IDX_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "mt_spec_ring.h"
 
 /** Largest ring size in slots: 2*S must fit in 32 bits with room to spare. */
 #define MT_RING_SLOTS_MAX 0x40000000u
+
+/** Index i is a mirror index of a ring of s slots (2 * s fits in 32 bits). */
+/*@ requires 1 <= s <= MT_RING_SLOTS_MAX;
+    assigns \nothing;
+    ensures \result != 0 <==> MtIdxOk(i, s);
+*/
+static inline bool mt_idx_ok(uint32_t i, uint32_t s)
+{
+    return i < (2u * s);
+}
 
 /** Number of items between read index r and write index w. */
 /*@ requires 1 <= s <= MT_RING_SLOTS_MAX;

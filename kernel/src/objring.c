@@ -253,3 +253,25 @@ uint32_t mt_oring_flush(mt_oring_t *r)
     mt_store_release_u32(&r->head, r->tail_cache);
     return n;
 }
+
+bool mt_oring_valid(const mt_oring_t *r)
+{
+    uint32_t s = r->slots;
+    uint32_t count;
+    uint32_t filled;
+
+    /* cap < MT_ORING_BYTES_MAX keeps cap + 1 from wrapping; s * elem <= MT_ORING_BYTES_MAX with
+     * elem >= 1 bounds s by MT_RING_SLOTS_MAX, which the index checks need */
+    if ((r->cap < 1u) || (r->cap >= MT_ORING_BYTES_MAX) || (s != (r->cap + 1u)) || (r->elem < 1u) ||
+        (((uint64_t)s * (uint64_t)r->elem) > (uint64_t)MT_ORING_BYTES_MAX)) {
+        return false;
+    }
+    if (!mt_idx_ok(r->head, s) || !mt_idx_ok(r->tail, s) || !mt_idx_ok(r->head_cache, s) ||
+        !mt_idx_ok(r->tail_cache, s)) {
+        return false;
+    }
+    count = mt_idx_count(r->tail, r->head, s);
+    filled = mt_idx_count(r->tail, r->head_cache, s);
+    return (count <= s) && (mt_idx_count(r->head, r->head_cache, s) <= filled) && (filled <= s) &&
+           (mt_idx_count(r->tail_cache, r->head, s) <= count);
+}

@@ -286,3 +286,20 @@ uint32_t mt_bring_flush(mt_bring_t *r)
     mt_store_release_u32(&r->head, r->tail_cache);
     return n;
 }
+
+bool mt_bring_valid(const mt_bring_t *r)
+{
+    uint32_t cap = r->cap;
+    uint32_t count;
+    uint32_t filled;
+
+    if ((cap < 1u) || (cap > MT_BRING_CAP_MAX) || !mt_idx_ok(r->head, cap) || !mt_idx_ok(r->tail, cap) ||
+        !mt_idx_ok(r->head_cache, cap) || !mt_idx_ok(r->tail_cache, cap)) {
+        return false;
+    }
+    count = mt_idx_count(r->tail, r->head, cap);
+    filled = mt_idx_count(r->tail, r->head_cache, cap);
+    return (count <= cap) && (mt_idx_count(r->head, r->head_cache, cap) <= filled) &&
+           (filled <= cap) && (mt_idx_count(r->tail_cache, r->head, cap) <= count) &&
+           (r->reserved <= (cap - count)) && (r->reserved <= (cap - filled));
+}

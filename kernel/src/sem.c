@@ -69,3 +69,8 @@ void mt_sem_signal_isr(mt_sem_t *s)
     mt_sem_signal_i(s);
     mt_port_unlock_isr();
 }
+
+bool mt_sem_valid(const mt_sem_t *s)
+{
+    return (s->token == 0u) || ((s->token == 1u) && (s->waiter == (mt_port_tref_t)0));
+}

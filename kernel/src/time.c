@@ -54,3 +54,8 @@ uint64_t mt_time_ticks_to_us(uint64_t ticks, uint32_t hz)
     }
     return (whole * 1000000u) + part;
 }
+
+bool mt_time_ext_valid(const mt_time_ext_t *t)
+{
+    return (t->hw_max >= 1u) && (t->last_hw <= t->hw_max);
+}

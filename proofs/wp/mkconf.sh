@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # proofs/wp/mkconf.sh — generate the project Why3 configuration for Frama-C/WP.
 #
-#   proofs/wp/mkconf.sh [OUTDIR]          (default OUTDIR: build/proof)
-#   proofs/wp/mkconf.sh --selftest [OUTDIR]
+#   proofs/wp/mkconf.sh [OUTDIR [SMOKE_LIMIT]]   (defaults: build/proof, 2 s)
+#   proofs/wp/mkconf.sh --selftest [OUTDIR [SMOKE_LIMIT]]
+#
+# SMOKE_LIMIT must be the -wp-smoke-timeout of the WP runs that use the configuration: Z3 runs
+# through proofs/wp/goal_only.sh, which declines tasks with that time limit (smoke tests).
 #
 # Writes OUTDIR/why3.conf and OUTDIR/z3_fixedto.drv. `why3 config detect` writes absolute,
 # machine-specific paths, so the configuration is generated at proof time and never
@@ -24,6 +27,7 @@ if [ "${1:-}" = "--selftest" ]; then
     shift
 fi
 OUT="${1:-$ROOT/build/proof}"
+SMOKE="${2:-2}"
 mkdir -p "$OUT"
 OUT="$(cd "$OUT" && pwd)"
 
@@ -32,6 +36,9 @@ die() {
     exit 1
 }
 
+case "$SMOKE" in
+    ''|*[!0-9]*) die "smoke-test limit '$SMOKE' is not a whole number of seconds" ;;
+esac
 command -v why3 >/dev/null || die "why3 not found (run tools/bootstrap.sh prove)"
 DATADIR="$(why3 --print-datadir)"
 STOCK_DRV="$DATADIR/drivers/z3_471.drv"
@@ -69,7 +76,8 @@ grep -qF "import \"$STOCK_DRV\"" "$tmp/z3_fixedto.drv" || die "z3_fixedto.drv: i
 {
     cat "$tmp/why3.conf"
     printf '\n'
-    sed -e '/^#/d' -e "s|@Z3@|$Z3|g" -e "s|@DRIVER@|$OUT/z3_fixedto.drv|g" "$HERE/why3.conf"
+    sed -e '/^#/d' -e "s|@Z3@|$Z3|g" -e "s|@DRIVER@|$OUT/z3_fixedto.drv|g" \
+        -e "s|@GATE@|$HERE/goal_only.sh|g" -e "s|@SMOKE@|$SMOKE|g" "$HERE/why3.conf"
 } >"$tmp/why3.conf.new"
 
 mv -f "$tmp/z3_fixedto.drv" "$OUT/z3_fixedto.drv"
@@ -100,8 +108,15 @@ if [ "$selftest" -eq 1 ]; then
         { cat "$tmp/stock.log" >&2; die "selftest: stock driver no longer reports High failure"; }
     grep -q 'result is: Timeout' "$tmp/fixed.log" ||
         { cat "$tmp/fixed.log" >&2; die "selftest: fixedTO driver does not report Timeout"; }
+    # The smoke gate: Z3 declines a task with the smoke limit, proves it with any other limit.
+    why3 -C "$OUT/why3.conf" prove -t "$SMOKE" -P z3-fixedto "$tmp/t.mlw" >"$tmp/gate1.log" 2>&1 || true
+    why3 -C "$OUT/why3.conf" prove -t "$((SMOKE + 1))" -P z3-fixedto "$tmp/t.mlw" >"$tmp/gate2.log" 2>&1 || true
+    grep -q 'Unknown' "$tmp/gate1.log" ||
+        { cat "$tmp/gate1.log" >&2; die "selftest: Z3 did not decline a task with the smoke limit"; }
+    grep -q 'Valid' "$tmp/gate2.log" ||
+        { cat "$tmp/gate2.log" >&2; die "selftest: Z3 did not prove a goal through the gate"; }
 fi
 
 printf 'why3:  %s (config: %s)\n' "$(why3 --version 2>&1 | head -n 1)" "${OUT#"$ROOT"/}/why3.conf"
 printf 'cvc4:  CVC4 1.8 (%s)\n' "$CVC4"
-printf 'z3:    Z3 4.8.12 and Z3 4.8.12 (fixedTO) (%s)\n' "$Z3"
+printf 'z3:    Z3 4.8.12 and Z3 4.8.12 (fixedTO) (%s; smoke tests of %s s declined)\n' "$Z3" "$SMOKE"

@@ -354,6 +354,8 @@ mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint1
       ensures status: \result == MT_OK;
       ensures state: m->state == MT_MISSION_RUNNING || m->state == MT_MISSION_COMPLETE;
       ensures same_mission: m->total == \old(m->total) && m->generation == \old(m->generation);
+      ensures complete_once: m->completions == \old(m->completions) + (m->state == MT_MISSION_COMPLETE ? 1 : 0) ||
+          \old(m->completions) == 0xFFFFFFFF;
     complete behaviors;
     disjoint behaviors;
 */

@@ -21,6 +21,7 @@
 #ifndef MT_OBJRING_H
 #define MT_OBJRING_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "mt/config.h"
@@ -227,6 +228,19 @@ mt_status_t mt_oring_update_front(mt_oring_t *r, const void *obj);
     ensures empty: MtORingCount(r) == 0;
 */
 uint32_t mt_oring_flush(mt_oring_t *r);
+
+/** Constant-time validity check, the C twin of MtORingInv: sizes, the storage bound and
+ *  every index relation of the invariant. What C cannot check (the storage is valid memory,
+ *  separated from the ring object) is its precondition. For debug assertions and tests; it
+ *  reads both sides' indices, so call it while neither side runs. [any context, pure] */
+/*@ requires obj: \valid(r);
+    requires mem: 1 <= r->elem && 1 <= r->slots && r->slots * r->elem <= MT_ORING_BYTES_MAX ==>
+        \valid(r->buf + (0 .. r->slots * r->elem - 1)) &&
+        \separated(r, r->buf + (0 .. r->slots * r->elem - 1));
+    assigns \nothing;
+    ensures twin: \result != 0 <==> MtORingInv(r);
+*/
+bool mt_oring_valid(const mt_oring_t *r);
 
 #ifdef __cplusplus
 }

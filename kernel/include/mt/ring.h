@@ -22,6 +22,7 @@
 #ifndef MT_RING_H
 #define MT_RING_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "mt/config.h"
@@ -248,6 +249,18 @@ uint32_t mt_bring_peek_vec(mt_bring_t *r, mt_iovec_t vec[2]);
     ensures empty: MtBRingCount(r) == 0;
 */
 uint32_t mt_bring_flush(mt_bring_t *r);
+
+/** Constant-time validity check, the C twin of MtBRingInv: capacity bound and every index
+ *  relation of the invariant. What C cannot check (the buffer is valid memory, separated
+ *  from the ring object) is its precondition. For debug assertions and tests; it reads both
+ *  sides' indices, so call it while neither side runs. [any context, pure] */
+/*@ requires obj: \valid(r);
+    requires mem: 1 <= r->cap <= MT_BRING_CAP_MAX ==>
+        \valid(r->buf + (0 .. r->cap - 1)) && \separated(r, r->buf + (0 .. r->cap - 1));
+    assigns \nothing;
+    ensures twin: \result != 0 <==> MtBRingInv(r);
+*/
+bool mt_bring_valid(const mt_bring_t *r);
 
 #ifdef __cplusplus
 }

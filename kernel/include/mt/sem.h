@@ -135,6 +135,15 @@ void mt_sem_signal(mt_sem_t *s);
 */
 void mt_sem_signal_isr(mt_sem_t *s);
 
+/** Constant-time validity check, the C twin of MtSemInv (the object itself must be valid
+ *  memory: its precondition). For debug assertions and tests. [lock held, or no other
+ *  context running] */
+/*@ requires obj: \valid(s);
+    assigns \nothing;
+    ensures twin: \result != 0 <==> MtSemInv(s);
+*/
+bool mt_sem_valid(const mt_sem_t *s);
+
 #ifdef __cplusplus
 }
 #endif

@@ -11,6 +11,7 @@
 #ifndef MT_TIME_H
 #define MT_TIME_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "mt/status.h"
@@ -74,6 +75,14 @@ uint64_t mt_time_extend(mt_time_ext_t *t, uint32_t hw_now);
     ensures saturated: (ticks * 1000000) / hz > 0xFFFFFFFFFFFFFFFF ==> \result == 0xFFFFFFFFFFFFFFFF;
 */
 uint64_t mt_time_ticks_to_us(uint64_t ticks, uint32_t hz);
+
+/** Constant-time validity check, the C twin of MtTimeExtInv (the object itself must be
+ *  valid memory: its precondition). For debug assertions and tests. [owner context, pure] */
+/*@ requires obj: \valid(t);
+    assigns \nothing;
+    ensures twin: \result != 0 <==> MtTimeExtInv(t);
+*/
+bool mt_time_ext_valid(const mt_time_ext_t *t);
 
 #ifdef __cplusplus
 }

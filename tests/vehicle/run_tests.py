@@ -1,0 +1,547 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""make test-vehicle: the example vehicle's tests (SITL flights, fault injection, bad
+missions, the schedulability check and its agreement with what SITL measures).
+
+    run_tests.py [--build DIR] [-k SUBSTRING]
+
+Each test runs the SITL binary (build/sitl/metronome-sitl, simulated time unless said
+otherwise) or tools/sched_check.py and checks its output. Prints one line per test and a
+summary; exit status 1 when any test fails.
+"""
+
+import argparse
+import json
+import os
+import re
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "vehicle", "tools"))
+import logdump  # noqa: E402
+
+PY = sys.executable
+MISSIONS = os.path.join(ROOT, "vehicle", "missions")
+
+
+class Fail(Exception):
+    pass
+
+
+def check(cond, what):
+    if not cond:
+        raise Fail(what)
+
+
+class Run:
+    """One SITL run: exit status, stdout, the task table and the counters."""
+
+    def __init__(self, binary, args, timeout=120, env=None):
+        t0 = time.time()
+        p = subprocess.run([binary] + args, capture_output=True, text=True, timeout=timeout, cwd=ROOT, env=env)
+        self.seconds = time.time() - t0
+        self.rc, self.out, self.err = p.returncode, p.stdout, p.stderr
+        self.lines = self.out.splitlines()
+        self.tasks = {}
+        hdr = next((i for i, l in enumerate(self.lines) if l.startswith("task ") and "pending" in l), None)
+        if hdr is not None:
+            for l in self.lines[hdr + 1:]:
+                f = l.split()
+                if len(f) != 12 or not f[3].isdigit():
+                    break
+                self.tasks[f[0]] = dict(zip(["rate", "budget", "runs", "expect", "min", "max", "mean",
+                                             "overrun", "slips", "skips", "pending"],
+                                            [f[1]] + [int(x) for x in f[2:]]))
+
+    def events(self, prefix):
+        """Console lines after the time stamp that start with prefix."""
+        out = []
+        for l in self.lines:
+            m = re.match(r"\[\s*[0-9.]+\] (.*)$", l)
+            if m and m.group(1).startswith(prefix):
+                out.append(m.group(1))
+        return out
+
+    def line(self, prefix):
+        return next((l for l in self.lines if l.startswith(prefix)), None)
+
+    def value(self, pattern):
+        m = re.search(pattern, self.out)
+        check(m is not None, "no match for %r in the output" % pattern)
+        return int(m.group(1))
+
+
+class Suite:
+    def __init__(self, build):
+        self.sitl = os.path.join(build, "sitl", "metronome-sitl")
+        self.sitl_over = os.path.join(build, "sitl", "metronome-sitl-overloaded")
+        self.sitl_asan = os.path.join(build, "sitl-asan", "metronome-sitl")
+        self.sitl_tsan = os.path.join(build, "sitl-tsan", "metronome-sitl")
+        self.tmp = tempfile.mkdtemp(prefix="veh-tests-")
+        self.cache = {}
+
+    def fly(self, mission, *extra, binary=None):
+        args = ["--quiet"] + list(extra) + ([mission] if mission else [])
+        key = (binary or self.sitl, tuple(args))
+        if key not in self.cache:
+            self.cache[key] = Run(binary or self.sitl, args)
+        return self.cache[key]
+
+    def sched(self, table, *extra):
+        j = os.path.join(self.tmp, "sched-%d.json" % len(self.cache))
+        t0 = time.time()
+        p = subprocess.run([PY, os.path.join(ROOT, "tools", "sched_check.py"), table, "--json", j] + list(extra),
+                           capture_output=True, text=True, timeout=300, cwd=ROOT)
+        res = json.load(open(j)) if os.path.exists(j) else None
+        return p.returncode, p.stdout + p.stderr, res, time.time() - t0
+
+
+# ---- flights --------------------------------------------------------------------------------
+
+def started(run):
+    return [re.match(r"mission: #(\d+) (\w+) started", e).group(1, 2) for e in run.events("mission: #")
+            if " started" in e]
+
+
+def flight_ok(run, log=None):
+    """A completed flight: exit 0, COMPLETE, nominal table facts (Z3: no task misses a
+    release, so no slip and nothing pending; honest budgets, so no overrun; which tasks
+    may be skipped is checked against Z3's lateness in t_agreement), no lost data."""
+    check(run.rc == 0, "exit status %d (expected 0)\n%s" % (run.rc, run.out[-2000:]))
+    check(run.line("mission: COMPLETE") is not None, "mission not complete")
+    check(run.line("run ended: mission complete, vehicle landed and disarmed") is not None, "run end")
+    check(len(run.tasks) == 12, "task table has %d rows" % len(run.tasks))
+    for name, r in run.tasks.items():
+        check(r["slips"] == 0 and r["pending"] <= 1 and r["overrun"] == 0,
+              "%s: slips %d pending %d overruns %d" % (name, r["slips"], r["pending"], r["overrun"]))
+        check(r["expect"] - 1 <= r["runs"] <= r["expect"], "%s ran %d times, expected %d" % (name, r["runs"],
+                                                                                           r["expect"]))
+    check(run.value(r"long loops (\d+)") == 0, "long loops")
+    check(run.value(r"(\d+) dropped, \d+ queued, \d+ failed reads") == 0, "barometer samples dropped")
+    check(run.value(r"bus: \d+ transactions, \d+ waited for the bus, (\d+) timeouts") == 0, "bus timeouts")
+    check(run.value(r"bus collisions (\d+)") == 0, "bus collisions")
+    check(run.value(r"log: \d+ records, \d+ bytes to the sink, (\d+) dropped") == 0, "log records dropped")
+    if log is not None:
+        data = open(log, "rb").read()
+        recs, errors = logdump.read(data)
+        check(not errors, "log: %s" % errors[:3])
+        check(len(recs) == run.value(r"log: (\d+) records"), "log records in the file vs the summary")
+        check(len(data) == run.value(r"log: \d+ records, (\d+) bytes"), "log bytes in the file vs the summary")
+        cmds = [struct.unpack_from("<QHHB", p) for typ, _, p in recs if typ == 6]
+        check(len([c for c in cmds if c[3] == 1]) == run.value(r"mission: COMPLETE \((\d+) commands started"),
+              "CMD start records vs commands started")
+        check(any(c[3] == 3 for c in cmds), "no mission-complete record in the log")
+
+
+def t_plain(S):
+    log = os.path.join(S.tmp, "plain.bin")
+    r = S.fly(os.path.join(MISSIONS, "plain.waypoints"), "--log", log)
+    flight_ok(r, log)
+    check(started(r) == [("1", "TAKEOFF"), ("2", "WAYPOINT"), ("3", "WAYPOINT"), ("4", "WAYPOINT"),
+                         ("5", "WAYPOINT"), ("6", "LAND")], "command sequence %s" % started(r))
+    check([re.search(r"#(\d+)", e).group(1) for e in r.events("mission: waypoint #")] == ["2", "3", "4", "5"],
+          "waypoints reached")
+    check(r.events("mission: complete") == ["mission: complete"], "mission complete once")
+    check(r.value(r"servo writes (\d+)") == 0, "servo writes")
+
+
+def t_jumps(S):
+    r = S.fly(os.path.join(MISSIONS, "jumps.waypoints"))
+    flight_ok(r)
+    square = [("2", "WAYPOINT"), ("3", "WAYPOINT"), ("4", "WAYPOINT")]
+    check(started(r) == [("1", "TAKEOFF")] + square * 3 + [("6", "WAYPOINT"), ("7", "LAND")],
+          "command sequence %s" % started(r))
+    check(r.value(r"\((\d+) commands started") == 12, "12 commands")
+
+
+def t_land(S):
+    r = S.fly(os.path.join(MISSIONS, "land.waypoints"))
+    flight_ok(r)
+    check(started(r) == [("1", "TAKEOFF"), ("3", "WAYPOINT"), ("2", "DO_CHANGE_SPEED"), ("5", "WAYPOINT"),
+                         ("4", "DO_SET_SERVO"), ("7", "LAND")], "command sequence %s" % started(r))
+    m = re.search(r"vehicle: landed at ([0-9.]+) m from home", r.out)
+    check(m is not None and 83.0 < float(m.group(1)) < 89.0, "landed at the LAND location (86 m from home)")
+    check(r.value(r"servo writes (\d+)") == 1, "one servo write")
+
+
+def t_rtl(S):
+    r = S.fly(os.path.join(MISSIONS, "rtl.waypoints"))
+    flight_ok(r)
+    check(started(r) == [("1", "TAKEOFF"), ("2", "WAYPOINT"), ("3", "WAYPOINT"), ("4", "RTL")], "sequence")
+    check(r.events("mission: RTL home reached, landing") != [], "RTL reached home")
+    m = re.search(r"vehicle: landed at ([0-9.]+) m from home", r.out)
+    check(m is not None and float(m.group(1)) < 2.0, "landed at home")
+
+
+def t_loiter(S):
+    r = S.fly(os.path.join(MISSIONS, "loiter.waypoints"))
+    flight_ok(r)
+    check(started(r) == [("1", "TAKEOFF"), ("2", "LOITER_TURNS"), ("5", "LOITER_TIME"), ("3", "CONDITION_DELAY"),
+                         ("4", "DO_SET_SERVO"), ("8", "WAYPOINT"), ("6", "CONDITION_YAW"),
+                         ("7", "CONDITION_DISTANCE"), ("9", "RTL")], "command sequence %s" % started(r))
+    for c in ("#3 CONDITION_DELAY done", "#6 CONDITION_YAW done", "#7 CONDITION_DISTANCE done"):
+        check(r.events("mission: " + c) != [], c)
+
+
+def t_stop_resume(S):
+    r = S.fly(os.path.join(MISSIONS, "plain.waypoints"), "--event", "20:stop", "--event", "26:resume")
+    flight_ok(r)
+    check(r.events("gcs: mission stopped at #3") != [], "stopped at #3")
+    check(r.events("vehicle: mode AUTO -> HOLD") != [] and r.events("vehicle: mode HOLD -> AUTO") != [],
+          "HOLD while stopped")
+    check(r.events("gcs: mission resumed") != [], "resumed")
+    # resume restarts the active nav command (#3 started twice), then the rest as usual
+    check(started(r) == [("1", "TAKEOFF"), ("2", "WAYPOINT"), ("3", "WAYPOINT"), ("3", "WAYPOINT"),
+                         ("4", "WAYPOINT"), ("5", "WAYPOINT"), ("6", "LAND")], "sequence %s" % started(r))
+    # nothing happens to the mission while it is stopped
+    ev = [(float(m.group(1)), m.group(2)) for m in re.finditer(r"\[\s*([0-9.]+)\] (mission: [^\n]*)", r.out)]
+    check(not any(20.0 < t < 26.0 for t, _ in ev), "mission events while stopped")
+
+
+def t_loiter_unlim(S):
+    """LOITER_UNLIM holds forever; a ground-station 'land' ends the flight, the mission stays
+    incomplete and the run says so (exit 1)."""
+    r = S.fly(os.path.join(ROOT, "tests", "vehicle", "missions", "loiter_unlim.waypoints"), "--event", "30:land")
+    check(r.rc == 1, "exit status %d (expected 1)" % r.rc)
+    check(started(r) == [("1", "TAKEOFF"), ("2", "LOITER_UNLIM")], "sequence %s" % started(r))
+    check(r.events("mission: #2 LOITER_UNLIM complete") == [], "LOITER_UNLIM completed")
+    ev = [(float(m.group(1)), m.group(2)) for m in re.finditer(r"\[\s*([0-9.]+)\] ([^\n]*)", r.out)]
+    check([t for t, e in ev if e == "gcs: land"] == [30.0], "land at 30 s")
+    check(r.line("run ended: vehicle landed and disarmed, mission not complete") is not None, "run end")
+    check(r.line("mission: NOT COMPLETE: mission stopped at #2") is not None, "summary")
+    m = re.search(r"vehicle: landed at ([0-9.]+) m from home", r.out)
+    check(m is not None and 18.0 < float(m.group(1)) < 22.0, "landed at the loiter point")
+    for name, t in r.tasks.items():
+        check(t["slips"] == 0 and t["overrun"] == 0, "%s slipped" % name)
+
+
+def t_builtin_matches_file(S):
+    a = S.fly(None, "--builtin")
+    b = S.fly(os.path.join(MISSIONS, "builtin.waypoints"))
+    flight_ok(a)
+    strip = lambda run: [l for l in run.lines if not l.startswith("mission: 8 items")]
+    check(strip(a) == strip(b), "the built-in table and builtin.waypoints fly differently")
+
+
+def t_deterministic(S):
+    r1 = Run(S.sitl, ["--quiet", os.path.join(MISSIONS, "plain.waypoints")])
+    r2 = S.fly(os.path.join(MISSIONS, "plain.waypoints"))
+    check(r1.out == r2.out, "two runs differ")
+    r3 = Run(S.sitl, ["--quiet", "--seed", "7", os.path.join(MISSIONS, "plain.waypoints")])
+    flight_ok(r3)
+    check(r3.out != r1.out, "another seed gives the same run")
+
+
+def t_fault_injection(S):
+    r = S.fly(os.path.join(MISSIONS, "plain.waypoints"), "--overrun", "gcs_update:2200:20:0.5")
+    check(r.rc == 0 and r.line("mission: COMPLETE") is not None, "mission not complete under the fault")
+    g = r.tasks["gcs_update"]
+    runs = r.value(r"fault injection: (\d+) runs of gcs_update overran")
+    check(runs > 50 and g["overrun"] == runs, "gcs_update overruns %d, injected %d" % (g["overrun"], runs))
+    slipped = [n for n, t in r.tasks.items() if t["slips"] > 0]
+    check(r.value(r"overruns: \d+, slips: (\d+)") > 0 and "nav_update" in slipped,
+          "slips counted (tasks with slips: %s)" % slipped)
+    check(sum(t["slips"] for t in r.tasks.values()) == r.value(r"overruns: \d+, slips: (\d+)"), "slip total")
+    check(r.value(r"long loops (\d+)") > 0, "long loops counted")
+    lost = r.value(r"(\d+) dropped, \d+ queued")
+    check(lost > 0 and r.value(r"barometer: (\d+) samples published") ==
+          r.value(r"(\d+) taken") + lost + r.value(r"(\d+) queued"),
+          "barometer: every sample taken, queued or counted as dropped")
+    for name in ("imu_read", "attitude_run", "motors_output"):
+        check(r.tasks[name]["runs"] == r.tasks[name]["expect"], "fast task %s missed a tick" % name)
+
+
+def t_bad_mission(S):
+    for f, line, what in (("tests/missions/bad/missing_field.waypoints", None, "field"),
+                          ("tests/missions/bad/jump_target.waypoints", None, "MT_E_MISSION_JUMP")):
+        r = Run(S.sitl, ["--quiet", os.path.join(ROOT, f)])
+        check(r.rc == 1, "%s: exit status %d (expected 1)" % (f, r.rc))
+        check(r.line("mission file rejected: " + os.path.join(ROOT, f)) is not None, "%s: no rejection" % f)
+        errs = [l for l in r.lines if l.startswith("  " + os.path.join(ROOT, f) + ":")]
+        check(errs and what in errs[0], "%s: error line %s" % (f, errs))
+        check(r.events("vehicle: arming refused: no valid mission loaded") != [], "%s: arming not refused" % f)
+        check(r.events("vehicle: armed") == [] and r.events("mission: #") == [], "%s: the vehicle armed" % f)
+        check(r.line("flight time: 0.0 s (never armed)") is not None, "%s: flight time" % f)
+        check(r.line("mission: NOT COMPLETE: no mission") is not None, "%s: summary" % f)
+
+
+def t_unreadable_mission(S):
+    r = Run(S.sitl, ["--quiet", os.path.join(S.tmp, "does-not-exist.waypoints")])
+    check(r.rc == 2 and "cannot read mission file" in r.err, "missing file: rc %d %s" % (r.rc, r.err))
+
+
+def t_realtime(S):
+    """The hop mission on real threads (timer, IO, main loop) against the wall clock, in the
+    ThreadSanitizer build: the vehicle's cross-thread data (barometer link, log ring, bus,
+    device registers) must be race-free."""
+    env = dict(os.environ, TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1")
+    r = Run(S.sitl_tsan, ["--quiet", "--realtime", os.path.join(MISSIONS, "hop.waypoints")], timeout=120,
+            env=env)
+    check("ThreadSanitizer" not in r.err, "TSan: %s" % r.err[-3000:])
+    check(r.rc == 0 and r.line("mission: COMPLETE") is not None, "real-time hop: rc %d\n%s" % (r.rc, r.out[-1500:]))
+    check(r.line("metronome SITL: real time") is not None, "not real time")
+    check(started(r) == [("1", "TAKEOFF"), ("2", "LAND")], "sequence")
+    m = re.search(r"sitl: ([0-9.]+) s flown in ([0-9.]+) s of wall time", r.err)
+    check(m and float(m.group(2)) > 0.8 * float(m.group(1)), "real time means wall time: %s" % r.err)
+    check(r.value(r"bus collisions (\d+)") == 0, "bus collisions with real threads")
+    check(r.value(r"log: \d+ records, \d+ bytes to the sink, (\d+) dropped") == 0, "log dropped")
+    check(r.value(r"timer procs: (\d+) dispatches") > 5000, "the timer thread ran")
+
+
+def t_sanitizers(S):
+    for args in (["--quiet", os.path.join(MISSIONS, "loiter.waypoints")],
+                 ["--quiet", "--event", "20:stop", "--event", "22:resume", os.path.join(MISSIONS, "jumps.waypoints")],
+                 ["--quiet", os.path.join(ROOT, "tests/missions/bad/values.waypoints")]):
+        r = Run(S.sitl_asan, args, timeout=300)
+        check(r.rc in (0, 1) and "runtime error" not in r.err and "AddressSanitizer" not in r.err,
+              "sanitizers: rc %d %s" % (r.rc, r.err[-1500:]))
+        ref = Run(S.sitl, args)
+        check(r.out == ref.out, "ASan/UBSan build flies differently from the gcc build")
+
+
+# ---- schedulability -----------------------------------------------------------------------------
+
+def t_sched_nominal(S):
+    rc, out, res, secs = S.sched(os.path.join(ROOT, "vehicle", "tasks.def"))
+    check(rc == 0 and "verdict: SCHEDULABLE" in out, "nominal table: rc %d\n%s" % (rc, out))
+    check(all(t["miss"] == "never" for t in res["tasks"]), "verdicts")
+    late = {t["name"]: t["lateness_ticks"] for t in res["tasks"] if t["lateness_ticks"]}
+    # the status line is the last task: when every task and every worst case coincide (the
+    # hyperperiod tick) it can be left for the next tick; every other task is never late
+    check(late == {"status_line": 1} and res["aligned_skip_possible"] is True, "lateness %s" % late)
+    check(res["fast_end_max_us"] <= res["period_us"], "fast loop")
+    S.nominal = res
+
+
+def t_sched_overloaded(S):
+    rc, out, res, secs = S.sched(os.path.join(ROOT, "tests", "vehicle", "overloaded.def"))
+    check(rc == 1 and "verdict: NOT SCHEDULABLE" in out, "overloaded table: rc %d\n%s" % (rc, out))
+    v = {t["name"]: t for t in res["tasks"]}
+    # hand analysis (overloaded.def): one heavy task per tick; nav_update at 2, 4, 6...,
+    # mission_update at 5, 9, 13..., telemetry_send at 3, 7, 11... (4 ticks apart, interval 2)
+    check(v["telemetry_send"]["miss"] == "must" and v["telemetry_send"]["must_by_tick"] == 7 and
+          v["telemetry_send"]["lateness_ticks"] == 2, "telemetry_send: %s" % v["telemetry_send"])
+    check(all(t["miss"] == "never" for n, t in v.items() if n != "telemetry_send"), "others never miss")
+    check(v["mission_update"]["lateness_ticks"] == 1, "mission_update is one tick late at worst")
+    check(all(t["lateness_ticks"] == 0 for n, t in v.items() if n not in ("telemetry_send", "mission_update")),
+          "the others are never late")
+    check(res["counterexample"]["task"] == "telemetry_send" and res["counterexample"]["tick"] == 7,
+          "counterexample")
+    check("counterexample: an execution in which telemetry_send falls two releases behind" in out, "printed")
+    S.overloaded = res
+
+
+def t_sched_rejects(S):
+    base = open(os.path.join(ROOT, "vehicle", "tasks.def")).read()
+
+    def edit(name, field, value):
+        """The table with one field (0-based, after the name) of task `name` replaced."""
+        m = re.search(r"SCHED_TASK\(%s,([^)]*)\)" % name, base)
+        check(m is not None, "no task %s in vehicle/tasks.def" % name)
+        f = [x.strip() for x in m.group(1).split(",")]
+        f[field] = str(value(f))
+        return base.replace(m.group(0), "SCHED_TASK(%s, %s)" % (name, ", ".join(f)))
+
+    cases = [(edit("gps_update", 4, lambda f: int(f[1])), "dishonest budget"),  # cost_max = budget
+             (edit("status_line", 1, lambda f: 2600), "MT_E_TASK_BUDGET"),    # budget > period
+             (edit("housekeeping", 2, lambda f: 2), "MT_E_TASK_RATE"),        # a fast priority
+             (edit("log_write", 2, lambda f: 1 + int(
+                 re.search(r"SCHED_TASK\(housekeeping,[^,]*,[^,]*,\s*(\d+)", base).group(1))),
+              "MT_E_TASK_ORDER"),                                              # priorities out of order
+             (base.replace("SCHED_LOOP(400)", "SCHED_LOOP(400)\nint x;"), "not a table entry"),
+             (base.replace("SCHED_LOOP(400)", "SCHED_LOOP(40)"), "MT_E_LOOP_RATE")]
+    for text, what in cases:
+        check(text != base, "test case did not change the table: %s" % what)
+        p = os.path.join(S.tmp, "bad.def")
+        open(p, "w").write(text)
+        rc, out, res, secs = S.sched(p)
+        check(rc == 2 and what in out, "%s: rc %d %s" % (what, rc, out))
+
+
+def missed(t):
+    """SITL: a release was missed (a slip counted, or two releases pending)."""
+    return t["slips"] > 0 or t["pending"] >= 2
+
+
+def t_agreement(S):
+    """Slips appear in SITL exactly where Z3 says they must, and nowhere it says never."""
+    nominal = S.nominal if hasattr(S, "nominal") else None
+    over = S.overloaded if hasattr(S, "overloaded") else None
+    check(nominal is not None and over is not None, "the sched-check tests must run first")
+    for m in ("plain", "jumps", "land", "rtl", "loiter", "builtin"):
+        S.fly(os.path.join(MISSIONS, m + ".waypoints"))
+    # nominal: every flight of this suite (Z3: never skipped) shows no skip and no slip
+    flights = [run for (b, _), run in S.cache.items() if b == S.sitl and run.line("mission: COMPLETE") and
+               "--overrun" not in run.out and "fault injection" not in run.out]
+    check(len(flights) >= 6, "too few nominal flights to compare (%d)" % len(flights))
+    for run in flights:
+        for t in nominal["tasks"]:
+            r = run.tasks[t["name"]]
+            check(t["miss"] == "never" and not missed(r), "nominal: %s missed in SITL" % t["name"])
+            if t["lateness_ticks"] == 0:
+                check(r["skips"] == 0, "nominal: Z3 says %s is never skipped, SITL skipped it" % t["name"])
+    # overloaded: a whole flight with the overloaded table, and the first ticks
+    run = S.fly(os.path.join(MISSIONS, "plain.waypoints"), binary=S.sitl_over)
+    check(run.line("mission: COMPLETE") is not None, "the overloaded vehicle still completes its mission")
+    for t in over["tasks"]:
+        r = run.tasks[t["name"]]
+        if t["miss"] == "must":
+            check(missed(r) and r["slips"] > 0, "%s: Z3 says it must miss, SITL: slips %d pending %d"
+                  % (t["name"], r["slips"], r["pending"]))
+        else:
+            check(t["miss"] == "never" and not missed(r), "%s: Z3 %s, SITL slips %d pending %d"
+                  % (t["name"], t["miss"], r["slips"], r["pending"]))
+            if t["lateness_ticks"] == 0:
+                check(r["skips"] == 0, "%s: Z3 says never skipped, SITL skipped it %d times" % (t["name"],
+                                                                                           r["skips"]))
+    # hand analysis: mission_update and nav_update are both due at tick 4 (nav_update runs),
+    # then mission_update runs at ticks 5, 9, 13..., where nav_update is never due: exactly
+    # one skip in SITL
+    check(run.tasks["mission_update"]["skips"] == 1, "mission_update skips %d" % run.tasks["mission_update"]["skips"])
+    by = next(t["must_by_tick"] for t in over["tasks"] if t["miss"] == "must")
+    early = Run(S.sitl_over, ["--quiet", "--ticks", str(by - 1), os.path.join(MISSIONS, "plain.waypoints")])
+    late = Run(S.sitl_over, ["--quiet", "--ticks", str(by), os.path.join(MISSIONS, "plain.waypoints")])
+    check(early.rc == 0 and late.rc == 0, "tick-limited runs")
+    check(not missed(early.tasks["telemetry_send"]) and missed(late.tasks["telemetry_send"]),
+          "the miss appears exactly at tick %d: %s / %s" % (by, early.tasks["telemetry_send"],
+                                                           late.tasks["telemetry_send"]))
+
+
+def t_vprint(S):
+    p = subprocess.run([os.path.join(os.path.dirname(S.sitl), "test_vprint")], capture_output=True, text=True,
+                       timeout=60)
+    check(p.returncode == 0 and "0 failures" in p.stdout, p.stdout + p.stderr)
+
+
+def t_encoding(S):
+    """The Z3 encoding of a tick against the kernel itself: SITL runs kernel/src/sched.c and
+    traces every input of each tick (sample time, timer rounds with their due times and costs,
+    each task's simulated cost) and the kernel's decisions (tasks run, tasks skipped, end of
+    the scan). Given the same inputs, the model must decide the same, tick by tick."""
+    sys.path.insert(0, os.path.join(ROOT, "tools"))
+    import sched_check as sc
+    import z3
+    for binary, table, ticks in ((S.sitl_over, os.path.join(ROOT, "tests", "vehicle", "overloaded.def"), 600),
+                                 (S.sitl, os.path.join(ROOT, "vehicle", "tasks.def"), 200)):
+        tr = os.path.join(S.tmp, "trace-%s.txt" % os.path.basename(table))
+        run = Run(binary, ["--quiet", "--ticks", str(ticks), "--trace", tr, os.path.join(MISSIONS, "plain.waypoints")])
+        check(run.rc == 0, "traced run: %s" % run.err)
+        t = sc.parse(table)
+        sc.validate(t)
+        tp = t.timer[0]
+        rounds = {}            # due time -> cost
+        ticks_in = []          # (sample, {task: cost}, tick, end, run, skip)
+        cur = None
+        for line in open(tr):
+            f = line.split()
+            if f[0] == "R":
+                rounds[int(f[1])] = int(f[2])
+            elif f[0] == "S":
+                cur = [int(f[1]), {}]
+            elif f[0] == "E":
+                cur[1][int(f[1])] = int(f[2])
+            elif f[0] == "K":
+                ticks_in.append((cur[0], cur[1], int(f[1]), int(f[2]), int(f[3], 16), int(f[4], 16)))
+        check(len(ticks_in) == ticks, "%d ticks traced" % len(ticks_in))
+        grid0 = min(rounds)    # the timer grid: grid0 + m * tp
+        s = z3.Solver()
+        due = [None if k.fast else z3.Bool("due%d" % i) for i, k in enumerate(t.tasks)]
+        model = sc.TickModel(t, "x", 0)
+        terms = model.build(s, "a", lambda i: due[i], z3.IntVal(0))
+        n = len(t.tasks)
+        last_run = [0] * n
+        decided = skips = 0
+        for sample, costs, tick, end, run_mask, skip_mask in ticks_in:
+            d0 = grid0 + -(-(sample - grid0) // tp) * tp   # first round due at or after the sample
+            s.push()
+            s.add(z3.Int("lat_x_a") == 0, z3.Int("phase_x_a") == d0 - sample)
+            if d0 - tp in rounds:
+                s.add(z3.Int("carry_x_a") == rounds[d0 - tp])
+            for m in range(model.rounds):
+                if d0 + m * tp in rounds:
+                    s.add(z3.Int("round%d_x_a" % m) == rounds[d0 + m * tp])
+            for i, k in enumerate(t.tasks):
+                if not k.fast:
+                    s.add(due[i] == (tick - last_run[i] >= k.interval))
+                if i in costs:
+                    s.add(z3.Int("e%d_x_a" % i) == costs[i])
+            check(s.check() == z3.sat, "tick %d: the traced inputs are outside the model" % tick)
+            m = s.model()
+            got_run = sum(1 << i for i in range(n) if not t.tasks[i].fast and z3.is_true(m.eval(terms["run"][i])))
+            got_skip = sum(1 << i for i in range(n) if z3.is_true(m.eval(terms["skip"][i])))
+            want_run = run_mask & ~sum(1 << i for i in range(n) if t.tasks[i].fast)
+            check(got_run == want_run and got_skip == skip_mask,
+                  "tick %d: model runs %x skips %x, kernel runs %x skips %x" % (tick, got_run, got_skip, want_run,
+                                                                               skip_mask))
+            check(m.eval(terms["wend"]).as_long() == end - sample,
+                  "tick %d: model ends at %d us, SITL at %d us" % (tick, m.eval(terms["wend"]).as_long(),
+                                                                   end - sample))
+            s.pop()
+            for i in range(n):
+                if run_mask >> i & 1:
+                    last_run[i] = tick
+            decided += 1
+            skips += bin(skip_mask).count("1")
+        check(decided == ticks, "ticks compared")
+        if "overloaded" in table:
+            check(skips > 200, "the overloaded trace has skips to compare (%d)" % skips)
+
+
+TESTS = [
+    ("vprint: console formatter against printf (ASan+UBSan)", t_vprint),
+    ("sched_check: vehicle/tasks.def is schedulable", t_sched_nominal),
+    ("sched_check: the overloaded table fails, telemetry_send must miss", t_sched_overloaded),
+    ("sched_check: malformed and dishonest tables are rejected", t_sched_rejects),
+    ("sitl: plain mission", t_plain),
+    ("sitl: jumps (DO_JUMP repeat 2)", t_jumps),
+    ("sitl: land at a location", t_land),
+    ("sitl: RTL", t_rtl),
+    ("sitl: loiter turns/time, conditions, servo", t_loiter),
+    ("sitl: stop and resume in the middle", t_stop_resume),
+    ("sitl: LOITER_UNLIM holds until the ground station lands it", t_loiter_unlim),
+    ("sitl: built-in mission = builtin.waypoints", t_builtin_matches_file),
+    ("sitl: deterministic simulated time", t_deterministic),
+    ("sitl: fault injection (gcs_update overruns)", t_fault_injection),
+    ("sitl: malformed missions rejected, vehicle stays disarmed", t_bad_mission),
+    ("sitl: unreadable mission file", t_unreadable_mission),
+    ("sitl: agreement with sched_check (nominal and overloaded)", t_agreement),
+    ("sched_check: the tick encoding decides as the kernel, tick by tick", t_encoding),
+    ("sitl: ASan+UBSan build", t_sanitizers),
+    ("sitl: --realtime on real threads (TSan build)", t_realtime),
+]
+
+
+def main(argv):
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("-k", default="")
+    args = ap.parse_args(argv)
+    S = Suite(os.path.abspath(args.build))
+    for b in (S.sitl, S.sitl_over, S.sitl_asan, S.sitl_tsan, os.path.join(os.path.dirname(S.sitl), "test_vprint")):
+        if not os.access(b, os.X_OK):
+            print("missing %s (make test-vehicle builds it)" % b)
+            return 2
+    failed = 0
+    n = 0
+    t0 = time.time()
+    for name, fn in TESTS:
+        if args.k not in name:
+            continue
+        n += 1
+        t1 = time.time()
+        try:
+            fn(S)
+            print("PASS %-62s %6.1f s" % (name, time.time() - t1))
+        except (Fail, subprocess.TimeoutExpired, KeyError, TypeError, AttributeError) as e:
+            failed += 1
+            print("FAIL %-62s %6.1f s\n     %s" % (name, time.time() - t1, str(e).replace("\n", "\n     ")))
+    print("test-vehicle: %d/%d passed in %.1f s" % (n - failed, n, time.time() - t0))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,343 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file main.c
+ * @brief The example vehicle as ChibiOS/RT firmware: the same components and
+ *        task table as SITL, on the ChibiOS port, flying the built-in mission
+ *        (vehicle/deploy/builtin_mission.c) in the simulated world (QEMU has
+ *        no sensors). Prints the flight summary on the UART and exits 0 only
+ *        when the mission completed and the checks below hold.
+ *
+ * Deployment: main loop (MAIN) on the port's metronome at the table's loop
+ * rate, the world stepped in its sample wait; timer thread (TIMER, 1 kHz)
+ * with the barometer driver; IO thread (IO, every 2 ms) with the log writer,
+ * whose sink checks every record and counts it (no file system), and the
+ * console: the main loop's lines go through a byte ring to the IO thread,
+ * which writes the polled UART, so a task that prints does not wait for the
+ * UART. Task times are real (instruction counts under QEMU -icount), not
+ * simulated.
+ *
+ * Uses only the kernel's public API, the port's services and the board
+ * console: no ChibiOS header.
+ */
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "builtin_mission.h"
+#include "fw_board.h"
+#include "mt/mt.h"
+#include "mt_port_chibios.h"
+#include "simplat.h"
+#include "veh.h"
+#include "vprint.h"
+
+/* Seeded failure (make ... FAIL=1): the mission gets a jump to a command that does not
+ * exist; the sequencer rejects it, the vehicle never arms, the run must exit non-zero. */
+#if defined(FW_FAIL)
+#define VEH_FW_FAIL FW_FAIL
+#else
+#define VEH_FW_FAIL 0
+#endif
+
+#define LOOP_HZ 400u
+#define IO_PERIOD_US 2000u
+#define STOP_TIMEOUT_US 100000u
+#define ARM_FIRST_US 1000000u
+#define ARM_RETRY_US 500000u
+#define ARM_TIMEOUT_US 15000000u
+#define FLIGHT_TIMEOUT_US 240000000u
+#define SETTLE_US 500000u
+
+/* The platform context: the world first (simplat.h). */
+typedef struct {
+    simplat_t world;
+    uint64_t boot_us;
+    uint64_t next_arm_us;
+    /* log sink (IO thread): a streaming check of the record framing */
+    uint64_t log_bytes;
+    uint32_t log_records;
+    uint32_t log_bad;
+    uint32_t log_pos; /* bytes of the current record seen */
+    uint8_t log_type;
+    uint8_t log_len;
+    uint8_t log_sum;
+    uint64_t telem_bytes;
+} fw_t;
+
+static fw_t g;
+
+/* Console: main loop -> byte ring -> IO thread -> UART. */
+static uint8_t console_store[4096];
+static mt_bring_t console_ring;
+static uint32_t console_lost; /* main loop: bytes that did not fit */
+static bool console_direct;   /* after the threads stopped: straight to the UART */
+static mt_chibios_metronome_t metronome;
+static mt_chibios_proc_thread_t timer_thread;
+static mt_chibios_proc_thread_t io_thread;
+static uint8_t timer_stack[2048] __attribute__((aligned(8)));
+static uint8_t io_stack[1024] __attribute__((aligned(8)));
+
+static void uart_write(const uint8_t *s, uint32_t n)
+{
+    uint32_t i;
+    for (i = 0u; i < n; i++) {
+        if (s[i] == (uint8_t)'\n') {
+            fw_putc('\r');
+        }
+        fw_putc((char)s[i]);
+    }
+}
+
+static void cb_console(void *ctx, const char *s, size_t n)
+{
+    (void)ctx;
+    if (console_direct) {
+        uart_write((const uint8_t *)s, (uint32_t)n);
+    } else {
+        /* zero-copy: reserve, copy into the ring's segments, commit */
+        mt_iovec_t vec[2];
+        uint32_t segs = mt_bring_reserve(&console_ring, vec, (uint32_t)n);
+        uint32_t off = 0u;
+        uint32_t i;
+        for (i = 0u; i < segs; i++) {
+            memcpy(vec[i].base, &s[off], vec[i].len);
+            off += vec[i].len;
+        }
+        (void)mt_bring_commit(&console_ring, off);
+        console_lost += (uint32_t)n - off;
+    }
+}
+
+/* IO proc: the console ring to the UART. */
+static void console_drain(void *arg)
+{
+    mt_iovec_t vec[2];
+    uint32_t segs = mt_bring_peek_vec(&console_ring, vec);
+    uint32_t n = 0u;
+    uint32_t i;
+
+    (void)arg;
+    for (i = 0u; i < segs; i++) {
+        uart_write(vec[i].base, vec[i].len);
+        n += vec[i].len;
+    }
+    if (n > 0u) {
+        (void)mt_bring_advance(&console_ring, n);
+    }
+}
+
+/* Record: 'M' 'T' type len payload[len] sum (vehicle/src/logger.c). */
+static void cb_log_sink(void *ctx, const uint8_t *data, uint32_t n)
+{
+    fw_t *f = (fw_t *)ctx;
+    uint32_t i;
+
+    for (i = 0u; i < n; i++) {
+        uint8_t b = data[i];
+        if (f->log_pos == 0u) {
+            if (b != 0x4Du) {
+                f->log_bad++;
+                continue;
+            }
+        } else if (f->log_pos == 1u) {
+            if (b != 0x54u) {
+                f->log_bad++;
+                f->log_pos = 0u;
+                continue;
+            }
+        } else if (f->log_pos == 2u) {
+            f->log_type = b;
+            f->log_sum = b;
+        } else if (f->log_pos == 3u) {
+            f->log_len = b;
+            f->log_sum = (uint8_t)(f->log_sum + b);
+        } else if (f->log_pos < (4u + (uint32_t)f->log_len)) {
+            f->log_sum = (uint8_t)(f->log_sum + b);
+        } else {
+            if (b == f->log_sum) {
+                f->log_records++;
+            } else {
+                f->log_bad++;
+            }
+            f->log_pos = 0u;
+            continue;
+        }
+        f->log_pos++;
+    }
+    f->log_bytes += n;
+}
+
+static void cb_telem(void *ctx, const uint8_t *data, uint32_t n)
+{
+    (void)data;
+    ((fw_t *)ctx)->telem_bytes += n;
+}
+
+static veh_gcs_cmd_t cb_gcs_poll(void *ctx)
+{
+    fw_t *f = (fw_t *)ctx;
+    uint64_t now = mt_port_now_us();
+
+    if ((veh_phase() == VEH_PHASE_BOOT) && (now >= f->next_arm_us)) {
+        f->next_arm_us = now + ARM_RETRY_US;
+        return VEH_GCS_ARM_AUTO;
+    }
+    return VEH_GCS_NONE;
+}
+
+static uint32_t failures;
+static mt_mission_cmd_t bad_mission[16];
+
+static void check(bool ok, const char *what)
+{
+    if (!ok) {
+        failures++;
+        veh_printf("CHECK FAILED: %s\n", what);
+    }
+}
+
+int main(void)
+{
+    veh_platform_t plat = {0};
+    veh_home_t home;
+    const char *reason = NULL;
+    uint32_t bad = 0u;
+    uint32_t period_us;
+    uint32_t cmin;
+    uint32_t cmax;
+    uint64_t end_us = 0u;
+    mt_status_t st;
+    const veh_counters_t *c;
+
+    fw_board_init();
+    mt_chibios_init();
+    mt_chibios_set_priority(MT_PRIO_MAIN, 0);
+    (void)mt_bring_init(&console_ring, console_store, (uint32_t)sizeof(console_store));
+
+    home.lat = veh_builtin_mission[0].x;
+    home.lon = veh_builtin_mission[0].y;
+    home.alt_cm = veh_builtin_mission[0].z;
+    if (mt_chibios_metronome_init(&metronome, LOOP_HZ) != MT_OK) {
+        fw_puts("metronome init failed\r\n");
+        fw_exit(FW_EXIT_FAILURE);
+    }
+    simplat_init(&g.world, &home, 1u, mt_chibios_metronome_wait, &metronome);
+    simplat_fill(&g.world, &plat);
+    plat.ctx = &g; /* the world is the first member */
+    plat.console = cb_console;
+    plat.log_sink = cb_log_sink;
+    plat.telem_write = cb_telem;
+    plat.gcs_poll = cb_gcs_poll;
+    plat.task_work = NULL; /* real execution time */
+    plat.status_lines = true;
+
+    if (VEH_FW_FAIL == 1) {
+        uint16_t i;
+        for (i = 0u; (i < veh_builtin_mission_len) && (i < 15u); i++) {
+            bad_mission[i] = veh_builtin_mission[i];
+        }
+        bad_mission[i].id = MT_MAV_CMD_DO_JUMP; /* to command 99 of at most 16 */
+        bad_mission[i].frame = 2u;
+        bad_mission[i].options = 1u;
+        bad_mission[i].param[0] = 99 * MT_MISSION_MILLI;
+        bad_mission[i].param[1] = 1 * MT_MISSION_MILLI;
+        st = veh_init(&plat, &home, bad_mission, (uint16_t)(i + 1u), &bad);
+    } else {
+        st = veh_init(&plat, &home, veh_builtin_mission, veh_builtin_mission_len, &bad);
+    }
+    g.boot_us = mt_port_now_us();
+    g.next_arm_us = g.boot_us + ARM_FIRST_US;
+    veh_printf("metronome firmware: ChibiOS/RT, loop %u Hz, %u tasks, built-in mission of %u "
+               "items\n",
+               (unsigned)veh_sched()->loop_rate_hz, (unsigned)veh_sched()->ntasks,
+               (unsigned)veh_builtin_mission_len);
+    if ((st != MT_OK) && (veh_sched()->ntasks == 0u)) {
+        veh_printf("task table rejected: %s at entry %u\n", mt_status_str(st), (unsigned)bad);
+        fw_exit(FW_EXIT_FAILURE);
+    }
+    if (st != MT_OK) {
+        veh_printf("mission rejected by the sequencer: %s at index %u; the vehicle stays "
+                   "disarmed\n",
+                   mt_status_str(st), (unsigned)bad);
+    }
+    veh_timer_spec(&period_us, &cmin, &cmax);
+    if ((mt_proc_register(veh_io_procs(), console_drain, NULL) != MT_OK) ||
+        (mt_chibios_proc_thread_start(&timer_thread, "timer", veh_timer_procs(), period_us,
+                                      timer_stack, (uint32_t)sizeof(timer_stack),
+                                      MT_PRIO_TIMER) != MT_OK) ||
+        (mt_chibios_proc_thread_start(&io_thread, "io", veh_io_procs(), IO_PERIOD_US, io_stack,
+                                      (uint32_t)sizeof(io_stack), MT_PRIO_IO) != MT_OK)) {
+        veh_printf("proc threads could not start\n");
+        fw_exit(FW_EXIT_FAILURE);
+    }
+
+    for (;;) {
+        uint64_t now;
+        veh_phase_t ph;
+        veh_loop_once(simplat_wait, &g.world);
+        now = mt_port_now_us() - g.boot_us;
+        if (g.world.sim.crashed) {
+            veh_note_crash(g.world.sim.last_touchdown_speed);
+        }
+        ph = veh_phase();
+        if (reason == NULL) {
+            if (ph == VEH_PHASE_DONE) {
+                reason = "mission complete, vehicle landed and disarmed";
+            } else if (ph == VEH_PHASE_ABORTED) {
+                reason = "vehicle landed and disarmed, mission not complete";
+            } else if (ph == VEH_PHASE_CRASHED) {
+                reason = "crash";
+            } else if ((ph == VEH_PHASE_BOOT) && (now > ARM_TIMEOUT_US)) {
+                reason = "the vehicle never armed";
+            } else if (now > FLIGHT_TIMEOUT_US) {
+                reason = "timeout";
+            } else {
+                /* flying */
+            }
+            if (reason != NULL) {
+                end_us = now + SETTLE_US;
+            }
+        }
+        if ((reason != NULL) && (now >= end_us)) {
+            break;
+        }
+    }
+    check(mt_chibios_proc_thread_stop(&timer_thread, STOP_TIMEOUT_US) == MT_OK,
+          "timer thread stopped");
+    check(mt_chibios_proc_thread_stop(&io_thread, STOP_TIMEOUT_US) == MT_OK, "io thread stopped");
+    /* both threads have exited: main is now the only consumer of the log and the console */
+    (void)mt_proc_dispatch(veh_io_procs());
+    (void)mt_proc_dispatch(veh_io_procs());
+    console_direct = true;
+
+    veh_summary(reason);
+    c = veh_counters();
+    {
+        char a[16];
+        char b[16];
+        veh_printf("world: max altitude %s m, max ground speed %s m/s, touchdowns %u, bus "
+                   "collisions %u, servo writes %u\n",
+                   vp_float(a, sizeof(a), g.world.max_alt, 1u),
+                   vp_float(b, sizeof(b), g.world.max_speed, 1u), (unsigned)g.world.sim.touchdowns,
+                   (unsigned)g.world.collisions, (unsigned)g.world.servo_writes);
+    }
+    veh_printf("log sink: %llu bytes, %u records checked, %u bad; metronome: %llu samples, %u "
+               "missed; timer round max %u us; console: %u bytes lost\n",
+               (unsigned long long)g.log_bytes, (unsigned)g.log_records, (unsigned)g.log_bad,
+               (unsigned long long)metronome.samples, (unsigned)metronome.missed,
+               (unsigned)veh_timer_procs()->max_round_us, (unsigned)console_lost);
+    check(veh_phase() == VEH_PHASE_DONE, "mission complete");
+    check(g.world.collisions == 0u, "no bus collision");
+    check((g.log_bad == 0u) && (g.log_records == c->log_records) && (c->log_dropped == 0u),
+          "every log record reached the sink intact");
+    check(g.log_bytes == c->log_bytes, "log bytes");
+    check(c->baro_bus_fail == 0u, "barometer reads");
+    check(console_lost == 0u, "console");
+    if (failures != 0u) {
+        veh_printf("RESULT: FAIL (%u checks)\n", (unsigned)failures);
+        fw_exit(FW_EXIT_FAILURE);
+    }
+    veh_printf("RESULT: PASS\n");
+    fw_exit(FW_EXIT_SUCCESS);
+}

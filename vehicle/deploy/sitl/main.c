@@ -1,0 +1,737 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file main.c
+ * @brief SITL: the vehicle on the host port (hal_posix) in the simulated world.
+ *
+ *   metronome-sitl [options] [MISSION.waypoints]
+ *     --builtin          fly the firmware's built-in mission instead of a file
+ *     --realtime         wall-clock time on real threads (timer thread 1 kHz, IO
+ *                        thread, main loop on the port's metronome)
+ *     --seed N           noise and task-cost seed (default 1)
+ *     --timeout S        give up after S seconds (default 600)
+ *     --ticks N          stop after N scheduler ticks (schedulability runs)
+ *     --log FILE         write the binary log to FILE
+ *     --event T:ACTION   ground-station command at T seconds: stop, resume, land
+ *     --overrun TASK:US[:START[:DURATION]]
+ *                        fault injection: every run of TASK takes US us more than
+ *                        its cost (from START s for DURATION s; default: always)
+ *     --wind N,E         constant wind, m/s
+ *     --quiet            no 1 Hz status lines
+ *     --trace FILE       simulated time: one line per event for the first --ticks (or all)
+ *                        ticks: "S t" sample, "R due cost" timer round, "E task cost"
+ *                        task run, "K tick end runmask skipmask" end of the scan
+ *                        (tests/vehicle: the Z3 encoding against the kernel's decisions)
+ *
+ * Simulated time (default): one thread; time moves only when a task spends its
+ * simulated cost (a pseudo-random time in the range of tasks.def, mostly near its low
+ * end), when the timer procs run (1 kHz, pre-empting the
+ * task that is running: their cost extends its wall time) or when the loop
+ * waits for the next sample (idle: timer and IO procs run there). Runs are
+ * deterministic and faster than real time.
+ *
+ * Exit status: 0 mission complete (or --ticks reached), 1 not complete
+ * (rejected mission, never armed, crash, timeout), 2 usage or I/O error.
+ */
+#define _GNU_SOURCE
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "builtin_mission.h"
+#include "mt/mt.h"
+#include "mt_posix.h"
+#include "report.h"
+#include "simplat.h"
+#include "veh.h"
+#include "vprint.h"
+#include "wpl.h"
+
+#define SIM_START_US 1000000u
+#define ARM_FIRST_US 1000000u /* first arm request after boot */
+#define ARM_RETRY_US 500000u
+#define ARM_TIMEOUT_US 15000000u
+#define MAX_EVENTS 16
+#define SETTLE_US 1000000u /* run on after the end for the log to drain */
+
+typedef struct {
+    uint64_t t_us;
+    veh_gcs_cmd_t cmd;
+} sitl_event_t;
+
+/* The platform context: the world first (simplat.h). */
+typedef struct {
+    simplat_t world;
+    bool sim;
+    FILE *log;
+    uint64_t log_written;
+    bool log_error;
+    uint64_t telem_bytes;
+    /* simulated time */
+    uint64_t next_sample;
+    uint32_t period_us;
+    uint64_t next_timer;
+    uint32_t timer_period;
+    uint32_t timer_cmin;
+    uint32_t timer_cmax;
+    uint64_t rng;
+    /* real time */
+    mt_posix_metronome_t met;
+    /* ground station */
+    uint64_t boot_us;
+    uint64_t next_arm_us;
+    sitl_event_t ev[MAX_EVENTS];
+    int nev;
+    int next_ev;
+    /* trace */
+    FILE *trace;
+    /* fault injection */
+    int overrun_task;
+    uint32_t overrun_us;
+    uint64_t overrun_from_us;
+    uint64_t overrun_to_us;
+    uint64_t overrun_runs;
+} sitl_t;
+
+static sitl_t g;
+
+/* ---- console and sinks ------------------------------------------------------------------- */
+
+static void cb_console(void *ctx, const char *s, size_t n)
+{
+    (void)ctx;
+    (void)fwrite(s, 1u, n, stdout);
+}
+
+static void cb_log_sink(void *ctx, const uint8_t *data, uint32_t n)
+{
+    sitl_t *s = (sitl_t *)ctx;
+    if (s->log != NULL) {
+        if (fwrite(data, 1u, n, s->log) != n) {
+            s->log_error = true;
+        }
+    }
+    s->log_written += n;
+}
+
+static void cb_telem(void *ctx, const uint8_t *data, uint32_t n)
+{
+    sitl_t *s = (sitl_t *)ctx;
+    (void)data;
+    s->telem_bytes += n;
+}
+
+static veh_gcs_cmd_t cb_gcs_poll(void *ctx)
+{
+    sitl_t *s = (sitl_t *)ctx;
+    uint64_t now = mt_port_now_us();
+
+    if ((s->next_ev < s->nev) && (now >= s->boot_us + s->ev[s->next_ev].t_us)) {
+        return s->ev[s->next_ev++].cmd;
+    }
+    if ((veh_phase() == VEH_PHASE_BOOT) && (now >= s->next_arm_us)) {
+        s->next_arm_us = now + ARM_RETRY_US;
+        return VEH_GCS_ARM_AUTO;
+    }
+    return VEH_GCS_NONE;
+}
+
+/* ---- simulated time ------------------------------------------------------------------------- */
+
+static uint64_t rng_next(sitl_t *s)
+{
+    uint64_t x = s->rng;
+    x ^= x >> 12;
+    x ^= x << 25;
+    x ^= x >> 27;
+    s->rng = x;
+    return x * 0x2545F4914F6CDD1Dull;
+}
+
+/* A simulated execution time in [lo, hi]: lo + (hi - lo) u^3, u uniform in [0, 1], so most
+ * runs take about their typical time and a few come close to the worst case (tasks.def
+ * gives the range measured on the target; the schedulability check covers all of it). */
+static uint32_t cost(sitl_t *s, uint32_t lo, uint32_t hi)
+{
+    uint64_t u = rng_next(s) >> 54; /* 0 .. 1023 */
+    return lo + (uint32_t)(((uint64_t)(hi - lo) * u * u * u + (1023u * 1023u * 1023u / 2u)) /
+                           (1023u * 1023u * 1023u));
+}
+
+static void sim_set_at_least(uint64_t t)
+{
+    uint64_t now = mt_port_now_us();
+    if (t > now) {
+        mt_posix_sim_advance(t - now);
+    }
+}
+
+/* The timer thread's round: all timer procs, then their cost. */
+static void timer_round(sitl_t *s)
+{
+    uint32_t c;
+    (void)mt_proc_dispatch(veh_timer_procs());
+    c = cost(s, s->timer_cmin, s->timer_cmax);
+    mt_posix_sim_advance(c);
+    if (s->trace != NULL) {
+        fprintf(s->trace, "R %llu %u\n", (unsigned long long)s->next_timer, (unsigned)c);
+    }
+    s->next_timer += s->timer_period;
+}
+
+/* A task spends us of simulated time; a timer round that falls due meanwhile
+ * pre-empts it (its cost extends the task's wall time). */
+static void sim_spend(sitl_t *s, uint64_t us)
+{
+    while (us > 0u) {
+        uint64_t now = mt_port_now_us();
+        uint64_t step;
+        if (now >= s->next_timer) {
+            timer_round(s);
+            continue;
+        }
+        step = s->next_timer - now;
+        if (step > us) {
+            step = us;
+        }
+        mt_posix_sim_advance(step);
+        us -= step;
+    }
+}
+
+static void cb_task_work(void *ctx, uint32_t task, uint32_t cmin, uint32_t cmax)
+{
+    sitl_t *s = (sitl_t *)ctx;
+    uint64_t us = cost(s, cmin, cmax);
+
+    if ((int)task == s->overrun_task) {
+        uint64_t t = mt_port_now_us() - s->boot_us;
+        if ((t >= s->overrun_from_us) && (t < s->overrun_to_us)) {
+            us += s->overrun_us;
+            s->overrun_runs++;
+        }
+    }
+    if (s->trace != NULL) {
+        fprintf(s->trace, "E %u %llu\n", (unsigned)task, (unsigned long long)us);
+    }
+    sim_spend(s, us);
+}
+
+/* The main loop's sample wait in simulated time: the port metronome's grid (a late
+ * loop skips to the next boundary); until the sample the loop is idle, so the timer
+ * rounds due before it and the IO procs run there. */
+static uint64_t sim_wait(void *ctx)
+{
+    sitl_t *s = (sitl_t *)ctx;
+    uint64_t now = mt_port_now_us();
+    uint64_t next;
+
+    if (s->next_sample == 0u) {
+        next = now + s->period_us;
+    } else {
+        next = s->next_sample + s->period_us;
+        if (next < now) {
+            next += ((now - next) + s->period_us - 1u) / s->period_us * s->period_us;
+        }
+    }
+    while (s->next_timer < next) {
+        sim_set_at_least(s->next_timer);
+        (void)mt_proc_dispatch(veh_io_procs());
+        timer_round(s);
+    }
+    sim_set_at_least(next);
+    s->next_sample = next;
+    if (s->trace != NULL) {
+        fprintf(s->trace, "S %llu\n", (unsigned long long)next);
+    }
+    return next;
+}
+
+/* ---- trace: what the scheduler decided in each tick ------------------------------------- */
+
+static uint64_t g_runs[MT_CFG_SCHED_MAX_TASKS];
+static uint64_t g_skips[MT_CFG_SCHED_MAX_TASKS];
+
+static void trace_tick_begin(void)
+{
+    const mt_sched_t *sc = veh_sched();
+    uint32_t i;
+    for (i = 0u; i < sc->ntasks; i++) {
+        mt_task_report_t r;
+        mt_sched_task_report(sc, i, &r);
+        g_runs[i] = r.runs;
+        g_skips[i] = r.budget_skips;
+    }
+}
+
+static void trace_tick_end(uint64_t max_ticks)
+{
+    const mt_sched_t *sc = veh_sched();
+    uint64_t run = 0u;
+    uint64_t skip = 0u;
+    uint32_t i;
+
+    for (i = 0u; i < sc->ntasks; i++) {
+        mt_task_report_t r;
+        mt_sched_task_report(sc, i, &r);
+        if (r.runs != g_runs[i]) {
+            run |= 1ull << i;
+        }
+        if (r.budget_skips != g_skips[i]) {
+            skip |= 1ull << i;
+        }
+    }
+    fprintf(g.trace, "K %llu %llu %llx %llx\n", (unsigned long long)sc->tick,
+            (unsigned long long)mt_port_now_us(), (unsigned long long)run,
+            (unsigned long long)skip);
+    if ((max_ticks != 0u) && (sc->tick >= max_ticks)) {
+        fclose(g.trace);
+        g.trace = NULL;
+    }
+}
+
+/* ---- mission file ------------------------------------------------------------------------ */
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+    long n;
+
+    if (f == NULL) {
+        return NULL;
+    }
+    if ((fseek(f, 0, SEEK_END) != 0) || ((n = ftell(f)) < 0) || (fseek(f, 0, SEEK_SET) != 0) ||
+        (n > (16L << 20))) {
+        fclose(f);
+        return NULL;
+    }
+    buf = malloc((size_t)n + 1u);
+    if ((buf == NULL) || (fread(buf, 1u, (size_t)n, f) != (size_t)n)) {
+        free(buf);
+        fclose(f);
+        return NULL;
+    }
+    fclose(f);
+    buf[n] = '\0';
+    *len = (size_t)n;
+    return buf;
+}
+
+/* Read and validate a mission file. Returns the number of commands (0: rejected, with the
+ * reasons printed), -1 on an I/O error. */
+static int load_file(const char *path, mt_mission_cmd_t *cmds, veh_home_t *home)
+{
+    size_t len = 0u;
+    char *text = slurp(path, &len);
+    mt_report_t *rep = calloc(1u, sizeof(*rep));
+    mt_plan_step_t plan[1];
+    mt_wpl_item_t *items = calloc(MT_CFG_MISSION_MAX_CMDS, sizeof(*items));
+    mt_wpl_error_t e;
+    size_t n = 0u;
+    size_t i;
+    int result = 0;
+
+    if ((text == NULL) || (rep == NULL) || (items == NULL)) {
+        fprintf(stderr, "sitl: cannot read mission file %s\n", path);
+        free(text);
+        free(rep);
+        free(items);
+        return -1;
+    }
+    if (mt_report_check(text, len, plan, 1u, rep) != MT_OK) {
+        printf("mission file rejected: %s\n", path);
+        for (i = 0u; i < rep->nerr; i++) {
+            const mt_wpl_error_t *x = &rep->errors[i];
+            printf("  %s:%u:", path, (unsigned)x->line);
+            if (x->field != 0u) {
+                printf(" field %u:", (unsigned)x->field);
+            }
+            if (x->index != MT_MISSION_NONE) {
+                printf(" index %u:", (unsigned)x->index);
+            }
+            printf(" %s (%s)\n", x->reason, mt_status_str(x->st));
+        }
+    } else if (mt_wpl_parse(text, len, items, MT_CFG_MISSION_MAX_CMDS, &n, &e) == MT_OK) {
+        result = (int)n;
+        for (i = 0u; i < n; i++) {
+            if (mt_wpl_to_cmd(&items[i], &cmds[i], &e) != MT_OK) {
+                printf("mission file rejected: %s:%u: %s\n", path, (unsigned)items[i].line,
+                       e.reason);
+                result = 0;
+                break;
+            }
+        }
+        if ((result > 0) && (cmds[0].x != 0 || cmds[0].y != 0)) {
+            home->lat = cmds[0].x;
+            home->lon = cmds[0].y;
+            home->alt_cm = cmds[0].z;
+        }
+    } else {
+        printf("mission file rejected: %s:%u: %s\n", path, (unsigned)e.line, e.reason);
+    }
+    free(text);
+    free(rep);
+    free(items);
+    return result;
+}
+
+/* ---- options ----------------------------------------------------------------------------- */
+
+static int usage(void)
+{
+    fprintf(stderr,
+            "usage: metronome-sitl [--builtin] [--realtime] [--seed N] [--timeout S] [--ticks N]\n"
+            "                      [--log FILE] [--event T:stop|resume|land]...\n"
+            "                      [--overrun TASK:US[:START[:DURATION]]] [--wind N,E] [--quiet]\n"
+            "                      [--trace FILE]\n"
+            "                      [MISSION.waypoints]\n");
+    return 2;
+}
+
+static bool parse_event(const char *a)
+{
+    char *end = NULL;
+    double t = strtod(a, &end);
+    veh_gcs_cmd_t c;
+
+    if ((end == a) || (*end != ':') || (t < 0.0) || (g.nev >= MAX_EVENTS)) {
+        return false;
+    }
+    end++;
+    if (strcmp(end, "stop") == 0) {
+        c = VEH_GCS_STOP;
+    } else if (strcmp(end, "resume") == 0) {
+        c = VEH_GCS_RESUME;
+    } else if (strcmp(end, "land") == 0) {
+        c = VEH_GCS_LAND;
+    } else {
+        return false;
+    }
+    /* keep the list sorted by time */
+    {
+        int i = g.nev;
+        uint64_t us = (uint64_t)(t * 1e6);
+        while ((i > 0) && (g.ev[i - 1].t_us > us)) {
+            g.ev[i] = g.ev[i - 1];
+            i--;
+        }
+        g.ev[i].t_us = us;
+        g.ev[i].cmd = c;
+        g.nev++;
+    }
+    return true;
+}
+
+static char g_overrun_name[64];
+
+static bool parse_overrun(const char *a)
+{
+    const char *colon = strchr(a, ':');
+    char *end = NULL;
+    double from = 0.0;
+    double dur = 1e9;
+    unsigned long us;
+
+    if ((colon == NULL) || ((size_t)(colon - a) >= sizeof(g_overrun_name))) {
+        return false;
+    }
+    memcpy(g_overrun_name, a, (size_t)(colon - a));
+    g_overrun_name[colon - a] = '\0';
+    us = strtoul(colon + 1, &end, 10);
+    if ((end == colon + 1) || (us > 1000000ul)) {
+        return false;
+    }
+    if (*end == ':') {
+        const char *p = end + 1;
+        from = strtod(p, &end);
+        if (end == p) {
+            return false;
+        }
+        if (*end == ':') {
+            p = end + 1;
+            dur = strtod(p, &end);
+            if (end == p) {
+                return false;
+            }
+        }
+    }
+    if (*end != '\0') {
+        return false;
+    }
+    g.overrun_us = (uint32_t)us;
+    g.overrun_from_us = (uint64_t)(from * 1e6);
+    g.overrun_to_us = g.overrun_from_us + (uint64_t)(dur * 1e6);
+    return true;
+}
+
+static double wall_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ((double)ts.tv_nsec * 1e-9);
+}
+
+int main(int argc, char **argv)
+{
+    static mt_mission_cmd_t cmds[MT_CFG_MISSION_MAX_CMDS];
+    const char *mission_path = NULL;
+    const char *log_path = NULL;
+    const char *trace_path = NULL;
+    bool builtin = false;
+    bool quiet = false;
+    uint64_t seed = 1u;
+    double timeout_s = 600.0;
+    uint64_t max_ticks = 0u;
+    double wind_n = 0.0;
+    double wind_e = 0.0;
+    veh_home_t home = {465197000, 65657000, 40000};
+    veh_platform_t plat;
+    int ncmds = 0;
+    uint32_t bad = 0u;
+    mt_status_t st;
+    mt_posix_proc_thread_t timer_thr;
+    mt_posix_proc_thread_t io_thr;
+    const char *reason;
+    double w0;
+    int rc;
+    int i;
+
+    memset(&g, 0, sizeof(g));
+    g.sim = true;
+    g.overrun_task = -1;
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *val = (i + 1 < argc) ? argv[i + 1] : NULL;
+        if (strcmp(a, "--builtin") == 0) {
+            builtin = true;
+        } else if (strcmp(a, "--realtime") == 0) {
+            g.sim = false;
+        } else if (strcmp(a, "--quiet") == 0) {
+            quiet = true;
+        } else if ((strcmp(a, "--seed") == 0) && (val != NULL)) {
+            seed = strtoull(val, NULL, 10);
+            i++;
+        } else if ((strcmp(a, "--timeout") == 0) && (val != NULL)) {
+            timeout_s = strtod(val, NULL);
+            i++;
+        } else if ((strcmp(a, "--ticks") == 0) && (val != NULL)) {
+            max_ticks = strtoull(val, NULL, 10);
+            i++;
+        } else if ((strcmp(a, "--trace") == 0) && (val != NULL)) {
+            trace_path = val;
+            i++;
+        } else if ((strcmp(a, "--log") == 0) && (val != NULL)) {
+            log_path = val;
+            i++;
+        } else if ((strcmp(a, "--event") == 0) && (val != NULL)) {
+            if (!parse_event(val)) {
+                return usage();
+            }
+            i++;
+        } else if ((strcmp(a, "--overrun") == 0) && (val != NULL)) {
+            if (!parse_overrun(val)) {
+                return usage();
+            }
+            i++;
+        } else if ((strcmp(a, "--wind") == 0) && (val != NULL)) {
+            if (sscanf(val, "%lf,%lf", &wind_n, &wind_e) != 2) {
+                return usage();
+            }
+            i++;
+        } else if ((a[0] != '-') && (mission_path == NULL)) {
+            mission_path = a;
+        } else {
+            return usage();
+        }
+    }
+    if ((mission_path == NULL) == !builtin) {
+        fprintf(stderr, "sitl: give a mission file or --builtin (not both)\n");
+        return usage();
+    }
+    if (log_path != NULL) {
+        g.log = fopen(log_path, "wb");
+        if (g.log == NULL) {
+            fprintf(stderr, "sitl: cannot write %s\n", log_path);
+            return 2;
+        }
+    }
+
+    if (trace_path != NULL) {
+        g.trace = g.sim ? fopen(trace_path, "w") : NULL;
+        if (g.trace == NULL) {
+            fprintf(stderr, "sitl: --trace needs simulated time and a writable file\n");
+            return 2;
+        }
+    }
+    if (g.sim) {
+        mt_posix_sim_enable(SIM_START_US);
+    }
+    g.rng = (seed * 0x9E3779B97F4A7C15ull) | 1u;
+    if (builtin) {
+        ncmds = (int)veh_builtin_mission_len;
+        memcpy(cmds, veh_builtin_mission, (size_t)ncmds * sizeof(cmds[0]));
+        home.lat = cmds[0].x;
+        home.lon = cmds[0].y;
+        home.alt_cm = cmds[0].z;
+    } else {
+        ncmds = load_file(mission_path, cmds, &home);
+        if (ncmds < 0) {
+            return 2;
+        }
+    }
+
+    simplat_init(&g.world, &home, seed, g.sim ? sim_wait : mt_posix_metronome_wait,
+                 g.sim ? (void *)&g : (void *)&g.met);
+    simplat_set_wind(&g.world, (float)wind_n, (float)wind_e);
+    memset(&plat, 0, sizeof(plat));
+    simplat_fill(&g.world, &plat);
+    plat.ctx = &g; /* the world is the first member */
+    plat.console = cb_console;
+    plat.log_sink = cb_log_sink;
+    plat.telem_write = cb_telem;
+    plat.gcs_poll = cb_gcs_poll;
+    plat.task_work = g.sim ? cb_task_work : NULL;
+    plat.status_lines = !quiet;
+
+    st = veh_init(&plat, &home, cmds, (uint16_t)ncmds, &bad);
+    g.boot_us = mt_port_now_us();
+    g.next_arm_us = g.boot_us + ARM_FIRST_US;
+    veh_timer_spec(&g.timer_period, &g.timer_cmin, &g.timer_cmax);
+    g.period_us = veh_sched()->period_us;
+    g.next_timer = g.boot_us + g.timer_period;
+    if ((st != MT_OK) && (veh_sched()->ntasks == 0u)) {
+        fprintf(stderr, "sitl: task table rejected: %s at entry %u\n", mt_status_str(st), bad);
+        return 2;
+    }
+    if (g_overrun_name[0] != '\0') {
+        const mt_sched_t *sc = veh_sched();
+        uint32_t k;
+        for (k = 0u; k < sc->ntasks; k++) {
+            if (strcmp(sc->tasks[k].name, g_overrun_name) == 0) {
+                g.overrun_task = (int)k;
+            }
+        }
+        if (g.overrun_task < 0) {
+            fprintf(stderr, "sitl: --overrun: no task named %s\n", g_overrun_name);
+            return 2;
+        }
+    }
+    veh_printf("metronome SITL: %s time, loop %u Hz, %u tasks, seed %llu\n",
+               g.sim ? "simulated" : "real", (unsigned)veh_sched()->loop_rate_hz,
+               (unsigned)veh_sched()->ntasks, (unsigned long long)seed);
+    if (st != MT_OK) {
+        veh_printf("mission rejected by the sequencer: %s at index %u; the vehicle stays "
+                   "disarmed\n",
+                   mt_status_str(st), (unsigned)bad);
+    } else if (ncmds == 0) {
+        veh_printf("no mission loaded; the vehicle stays disarmed\n");
+    } else {
+        veh_printf("mission: %d items (%s)\n", ncmds, builtin ? "built-in" : mission_path);
+    }
+    if (g.overrun_task >= 0) {
+        veh_printf("fault injection: %s takes %u us more per run\n", g_overrun_name,
+                   (unsigned)g.overrun_us);
+    }
+
+    if (!g.sim) {
+        mt_posix_metronome_init(&g.met, g.period_us);
+        if ((mt_posix_proc_thread_start(&timer_thr, veh_timer_procs(), g.timer_period,
+                                        MT_PRIO_TIMER) != MT_OK) ||
+            (mt_posix_proc_thread_start(&io_thr, veh_io_procs(), 1000u, MT_PRIO_IO) != MT_OK)) {
+            fprintf(stderr, "sitl: cannot start the proc threads\n");
+            return 2;
+        }
+    }
+
+    w0 = wall_s();
+    reason = NULL;
+    {
+        uint64_t end_us = 0u;
+        for (;;) {
+            uint64_t now;
+            veh_phase_t ph;
+            if (g.trace != NULL) {
+                trace_tick_begin();
+            }
+            veh_loop_once(simplat_wait, &g.world);
+            if (g.trace != NULL) {
+                trace_tick_end(max_ticks);
+            }
+            now = mt_port_now_us() - g.boot_us;
+            if (g.world.sim.crashed) {
+                veh_note_crash(g.world.sim.last_touchdown_speed);
+            }
+            ph = veh_phase();
+            if ((reason == NULL) && (max_ticks != 0u) && (veh_sched()->tick >= max_ticks)) {
+                reason = "tick limit reached";
+                break; /* exactly max_ticks ticks */
+            }
+            if (reason == NULL) {
+                if (ph == VEH_PHASE_DONE) {
+                    reason = "mission complete, vehicle landed and disarmed";
+                } else if (ph == VEH_PHASE_ABORTED) {
+                    reason = "vehicle landed and disarmed, mission not complete";
+                } else if (ph == VEH_PHASE_CRASHED) {
+                    reason = "crash";
+                } else if ((ph == VEH_PHASE_BOOT) && (now > ARM_TIMEOUT_US)) {
+                    reason = "the vehicle never armed";
+                } else if ((double)now > timeout_s * 1e6) {
+                    reason = "timeout";
+                }
+                if (reason != NULL) {
+                    end_us = now + SETTLE_US;
+                }
+            }
+            if ((reason != NULL) && (now >= end_us)) {
+                break;
+            }
+        }
+    }
+    if (!g.sim) {
+        mt_posix_proc_thread_stop(&timer_thr);
+        mt_posix_proc_thread_stop(&io_thr);
+    }
+    /* drain what is left of the log (the IO thread is stopped: this is its consumer now) */
+    (void)mt_proc_dispatch(veh_io_procs());
+    (void)mt_proc_dispatch(veh_io_procs());
+
+    veh_summary(reason);
+    {
+        char a[16];
+        char b[16];
+        veh_printf("world: max altitude %s m, max ground speed %s m/s, touchdowns %u, bus "
+                   "collisions %u, servo writes %u\n",
+                   vp_float(a, sizeof(a), g.world.max_alt, 1u),
+                   vp_float(b, sizeof(b), g.world.max_speed, 1u), (unsigned)g.world.sim.touchdowns,
+                   (unsigned)g.world.collisions, (unsigned)g.world.servo_writes);
+    }
+    if (g.overrun_task >= 0) {
+        veh_printf("fault injection: %llu runs of %s overran by %u us\n",
+                   (unsigned long long)g.overrun_runs, g_overrun_name, (unsigned)g.overrun_us);
+    }
+    if (g.trace != NULL) {
+        fclose(g.trace);
+        g.trace = NULL;
+    }
+    if (g.log != NULL) {
+        if ((fclose(g.log) != 0) || g.log_error) {
+            fprintf(stderr, "sitl: error writing %s\n", log_path);
+            return 2;
+        }
+        veh_printf("log file: %s (%llu bytes)\n", log_path, (unsigned long long)g.log_written);
+    }
+    fflush(stdout);
+    {
+        double w = wall_s() - w0;
+        double simulated = (double)(mt_port_now_us() - g.boot_us) * 1e-6;
+        fprintf(stderr, "sitl: %.1f s %s in %.2f s of wall time (%.0fx real time)\n", simulated,
+                g.sim ? "simulated" : "flown", w, (w > 0.0) ? simulated / w : 0.0);
+    }
+    rc =
+        ((veh_phase() == VEH_PHASE_DONE) || ((max_ticks != 0u) && (veh_sched()->tick >= max_ticks)))
+            ? 0
+            : 1;
+    return rc;
+}

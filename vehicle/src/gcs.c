@@ -1,0 +1,143 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file gcs.c
+ * @brief gcs_update (400 Hz): ground-station commands (arm and fly AUTO, stop,
+ *        resume, land) with the pre-arm checks; telemetry_send (10 Hz): a
+ *        status packet.
+ */
+#include <string.h>
+
+#include "veh_int.h"
+
+#define GPS_FIXES_TO_ARM 5u
+
+/* Why the vehicle may not arm, or NULL. */
+static const char *prearm_failure(veh_t *v)
+{
+    veh_state_t *s = &v->s;
+
+    if (!v->mission_ok) {
+        return "no valid mission loaded";
+    }
+    if (!s->baro_ok) {
+        return "barometer not calibrated";
+    }
+    if (!s->pos_ok || (s->gps_fixes < GPS_FIXES_TO_ARM)) {
+        return "waiting for GPS";
+    }
+    if (!s->bat_ok) {
+        return "battery monitor not read";
+    }
+    return NULL;
+}
+
+static void arm_auto(veh_t *v)
+{
+    veh_state_t *s = &v->s;
+    const char *why;
+
+    if (s->armed) {
+        return;
+    }
+    why = prearm_failure(v);
+    if (why != NULL) {
+        if (!s->arm_refused_said || (strcmp(why, s->refuse_reason) != 0)) {
+            veh_say(v, "vehicle: arming refused: %s", why);
+            (void)vp_snprintf(s->refuse_reason, sizeof(s->refuse_reason), "%s", why);
+            s->arm_refused_said = true;
+        }
+        return;
+    }
+    s->refuse_reason[0] = '\0';
+    (void)veh_arm(v);
+    veh_set_mode(v, VEH_MODE_AUTO);
+    if (!veh_auto_start(v)) {
+        veh_disarm(v, "mission start refused");
+        veh_set_mode(v, VEH_MODE_STANDBY);
+    }
+}
+
+void veh_gcs_update(veh_t *v)
+{
+    veh_state_t *s = &v->s;
+    veh_gcs_cmd_t cmd = v->plat->gcs_poll(v->plat->ctx);
+
+    switch (cmd) {
+    case VEH_GCS_ARM_AUTO: arm_auto(v); break;
+    case VEH_GCS_STOP:
+        if ((s->mode == VEH_MODE_AUTO) && (mt_mission_stop(&v->mission) == MT_OK)) {
+            veh_say(v, "gcs: mission stopped at #%u, holding position", v->mission.nav);
+            veh_set_mode(v, VEH_MODE_HOLD);
+        } else {
+            veh_say(v, "gcs: stop refused (mode %s)", veh_mode_name(s->mode));
+        }
+        break;
+    case VEH_GCS_RESUME:
+        if ((s->mode == VEH_MODE_HOLD) && s->armed) {
+            veh_set_mode(v, VEH_MODE_AUTO);
+            if (mt_mission_resume(&v->mission) == MT_OK) {
+                veh_say(v, "gcs: mission resumed");
+            } else {
+                veh_say(v, "gcs: resume refused by the mission");
+                veh_set_mode(v, VEH_MODE_HOLD);
+            }
+        } else {
+            veh_say(v, "gcs: resume refused (mode %s)", veh_mode_name(s->mode));
+        }
+        break;
+    case VEH_GCS_LAND:
+        if (s->armed) {
+            (void)mt_mission_stop(&v->mission);
+            veh_say(v, "gcs: land");
+            veh_set_mode(v, VEH_MODE_LAND);
+        }
+        break;
+    case VEH_GCS_NONE:
+    default: break;
+    }
+}
+
+static void put_u16(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)(v & 0xFFu);
+    p[1] = (uint8_t)((v >> 8) & 0xFFu);
+}
+
+static void put_u32(uint8_t *p, uint32_t v)
+{
+    put_u16(p, v & 0xFFFFu);
+    put_u16(p + 2, v >> 16);
+}
+
+void veh_telemetry_send(veh_t *v)
+{
+    veh_state_t *s = &v->s;
+    uint8_t pkt[32];
+    int32_t lat;
+    int32_t lon;
+    uint32_t i;
+    uint8_t sum = 0u;
+    float gs = vm_norm2(s->vel[0], s->vel[1]);
+
+    vm_ll_from_ne(s->home.lat, s->home.lon, s->pos[0], s->pos[1], &lat, &lon);
+    pkt[0] = 0x54u; /* 'T' */
+    pkt[1] = 27u;   /* payload bytes */
+    pkt[2] = v->telem_seq++;
+    put_u32(&pkt[3], (uint32_t)((veh_now(v) - v->boot_us) / 1000u));
+    pkt[7] = (uint8_t)s->mode;
+    pkt[8] = s->armed ? 1u : 0u;
+    put_u32(&pkt[9], (uint32_t)lat);
+    put_u32(&pkt[13], (uint32_t)lon);
+    put_u32(&pkt[17], (uint32_t)(int32_t)lroundf(-s->pos[2] * 100.0f));
+    put_u16(&pkt[21], (uint32_t)lroundf(vm_clamp(gs, 0.0f, 600.0f) * 100.0f));
+    put_u16(&pkt[23], (uint32_t)lroundf(s->att[2] * VM_RAD2DEG * 100.0f));
+    put_u16(&pkt[25], v->mission.nav);
+    put_u16(&pkt[27], (uint32_t)lroundf(vm_clamp(s->bat_volt, 0.0f, 60.0f) * 1000.0f));
+    for (i = 2u; i < 29u; i++) {
+        sum = (uint8_t)(sum + pkt[i]);
+    }
+    pkt[29] = sum;
+    v->plat->telem_write(v->plat->ctx, pkt, 30u);
+    v->c.telem_packets++;
+    v->c.telem_bytes += 30u;
+}

@@ -1,0 +1,251 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file veh_int.h
+ * @brief The vehicle's components and their state (internal to vehicle/src/).
+ *
+ * Components (one file each) and the tasks that run them (tasks.def):
+ *   ins.c       imu_read (fast): IMU sample, attitude estimate, inertial prediction
+ *   attctl.c    attitude_run (fast): attitude and rate controllers
+ *   motors.c    motors_output (fast): mixer, motor outputs
+ *   gcs.c       gcs_update: ground-station commands; telemetry_send
+ *   baro.c      the barometer driver (timer proc) and baro_update
+ *   gps.c       gps_update
+ *   posctl.c    nav_update: flight modes, navigation targets, position controller
+ *   auto.c      mission_update and the mission callbacks (AUTO mode)
+ *   logger.c    log_write and the log writer (IO proc)
+ *   house.c     housekeeping (battery over the shared bus), status_line
+ *   bus.c       the shared sensor bus (binary semaphore)
+ * vehicle.c is the topology: it owns the state below and the task table.
+ */
+#ifndef VEH_INT_H
+#define VEH_INT_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "baro_link.h"
+#include "mt/mt.h"
+#include "veh.h"
+#include "vmath.h"
+#include "vprint.h"
+
+/* ---- airframe (what the vehicle knows of itself) ----------------------------------------- */
+
+#define VEH_MASS 1.5f       /* kg */
+#define VEH_THRUST_MAX 7.5f /* N per motor */
+#define VEH_ARM 0.1768f     /* m, motor offset along each body axis */
+#define VEH_YAW_K 0.016f    /* m, yaw torque per newton */
+#define VEH_IXX 0.015f
+#define VEH_IYY 0.015f
+#define VEH_IZZ 0.026f
+#define VEH_MOTOR_IDLE 0.06f /* armed, on the ground */
+
+/* ---- shared sensor bus ---------------------------------------------------------------- */
+
+typedef struct {
+    mt_sem_t sem;       /**< binary semaphore used as the bus lock (1 = free) */
+    uint32_t transfers; /**< transactions done */
+    uint32_t waits;     /**< takes that found the bus busy */
+    uint32_t timeouts;  /**< takes that gave up */
+} veh_bus_t;
+
+/** Read n bytes of device register reg with the bus held (waits up to timeout_us for it).
+ *  Counters are updated under the bus lock. false: bus not obtained or device error. */
+bool veh_bus_read(veh_bus_t *b, const veh_platform_t *p, uint8_t dev, uint8_t reg, uint8_t *rx,
+                  uint32_t n, uint64_t timeout_us);
+
+/* ---- flight state --------------------------------------------------------------------- */
+
+typedef enum {
+    VEH_MODE_STANDBY = 0, /**< disarmed on the ground */
+    VEH_MODE_AUTO = 1,    /**< the mission flies the vehicle */
+    VEH_MODE_HOLD = 2,    /**< position hold (mission stopped) */
+    VEH_MODE_LAND = 3,    /**< land here */
+} veh_mode_t;
+
+typedef enum {
+    VEH_NAV_NONE = 0,
+    VEH_NAV_TAKEOFF,
+    VEH_NAV_WAYPOINT,
+    VEH_NAV_LOITER, /**< LOITER_TIME / LOITER_UNLIM: reach, then hold */
+    VEH_NAV_CIRCLE, /**< LOITER_TURNS */
+    VEH_NAV_LAND,
+    VEH_NAV_RTL,
+} veh_nav_kind_t;
+
+/** The active nav command as the vehicle flies it. */
+typedef struct {
+    veh_nav_kind_t kind;
+    uint16_t index;   /**< mission index */
+    uint16_t id;      /**< MAV_CMD */
+    float dest[3];    /**< NED destination (circle: centre) */
+    float radius;     /**< acceptance radius, m */
+    float hold_s;     /**< hold time after reaching (waypoint, loiter time); < 0: forever */
+    float turns;      /**< circle: turns to fly */
+    float circle_r;   /**< circle radius, m */
+    float circle_dir; /**< +1 clockwise, -1 counter-clockwise */
+    float angle;      /**< circle: current angle about the centre */
+    float swept;      /**< circle: angle flown */
+    uint8_t phase;    /**< sub-state (RTL: climb, return, descend; circle: approach, circle) */
+    bool reached;
+    uint64_t reached_us;
+    bool done;
+} veh_navcmd_t;
+
+/** The active do/condition command. */
+typedef struct {
+    uint16_t index;
+    uint16_t id;
+    uint64_t start_us;
+    float value; /**< delay s, distance m, target yaw rad */
+    bool active;
+} veh_docmd_t;
+
+typedef struct {
+    /* attitude estimate (ins.c) */
+    veh_imu_sample_t imu;
+    uint64_t last_imu_us;
+    float dt;     /**< seconds since the previous sample */
+    float att[3]; /**< roll, pitch, yaw */
+    float rates[3];
+    /* inertial navigation (ins.c, corrected by gps.c and baro.c) */
+    float pos[3]; /**< NED from home, m */
+    float vel[3];
+    bool pos_ok; /**< GPS has corrected the estimate */
+    uint32_t gps_fixes;
+    uint64_t gps_last_us;
+    veh_gps_fix_t gps;
+    float baro_alt;      /**< altitude from the barometer, m above the boot pressure */
+    float baro_p0;       /**< ground pressure, Pa */
+    uint32_t baro_cal_n; /**< samples in the ground calibration */
+    float baro_cal_sum;
+    bool baro_ok;
+    /* control targets (posctl.c -> attctl.c -> motors.c) */
+    float att_target[3]; /**< roll, pitch, yaw */
+    float rate_target[3];
+    float rate_i[3];
+    float rate_prev_err[3];
+    float thrust;    /**< N, total */
+    float torque[3]; /**< N m */
+    float motor[4];  /**< outputs 0..1 */
+    /* position controller */
+    float pc_target[3]; /**< NED position target */
+    float pc_vel_ff[3];
+    float pc_vel_i[3];
+    float pc_alt_i;
+    float yaw_cmd; /**< yaw the vehicle is asked to face */
+    float yaw_goal;
+    float yaw_rate; /**< rad/s slew of yaw_cmd */
+    bool yaw_fixed; /**< CONDITION_YAW holds the yaw until the next nav command */
+    /* leg (carrot) */
+    float leg_origin[3];
+    float leg_dest[3];
+    float leg_len;
+    float leg_s;
+    float leg_v;
+    bool leg_done;
+    float speed_xy; /**< cruise speed, m/s */
+    uint64_t last_nav_us;
+    /* modes */
+    veh_mode_t mode;
+    bool armed;
+    bool flying;           /**< took off since arming */
+    uint32_t landed_ticks; /**< nav runs with the landing detector true */
+    veh_navcmd_t nav;
+    veh_docmd_t doc;
+    float hold_pos[3];
+    float land_pos[3];
+    float rtl_alt;
+    veh_phase_t phase;
+    bool crashed;
+    bool arm_refused_said;
+    char refuse_reason[64];
+    /* home */
+    veh_home_t home;
+    /* battery (house.c) */
+    float bat_volt;
+    float bat_amp;
+    bool bat_ok;
+    bool bat_low_said;
+    uint32_t status_runs;
+} veh_state_t;
+
+typedef struct {
+    const veh_platform_t *plat;
+    veh_state_t s;
+    veh_bus_t bus;
+    veh_baro_link_t baro;
+    uint32_t baro_bus_fail; /**< timer proc: bus not obtained (timer thread only) */
+    mt_bring_t log;
+    uint8_t log_store[8192];
+    uint32_t log_runs;
+    uint8_t telem_seq;
+    mt_mission_t mission;
+    bool mission_ok;        /**< a mission is loaded */
+    mt_status_t mission_st; /**< status of the load */
+    uint32_t mission_bad;   /**< offending index of a rejected load */
+    mt_sched_t sched;
+    mt_proc_set_t timer_procs;
+    mt_proc_set_t io_procs;
+    veh_counters_t c;
+    uint64_t boot_us;
+} veh_t;
+
+/* ---- component entry points ------------------------------------------------------------ */
+
+/* task bodies (tasks.def): veh_<name> */
+void veh_imu_read(veh_t *v);
+void veh_attitude_run(veh_t *v);
+void veh_motors_output(veh_t *v);
+void veh_gcs_update(veh_t *v);
+void veh_baro_update(veh_t *v);
+void veh_gps_update(veh_t *v);
+void veh_nav_update(veh_t *v);
+void veh_mission_update(veh_t *v);
+void veh_telemetry_send(veh_t *v);
+void veh_log_write(veh_t *v);
+void veh_housekeeping(veh_t *v);
+void veh_status_line(veh_t *v);
+
+/* procs */
+void veh_baro_timer_proc(void *arg); /**< timer thread, 1 kHz */
+void veh_log_io_proc(void *arg);     /**< IO thread */
+
+/* AUTO mode (auto.c) */
+void veh_auto_init(veh_t *v);
+bool veh_auto_start(veh_t *v);
+const char *veh_cmd_name(uint16_t id);
+
+/* position control and modes (posctl.c) */
+void veh_pc_reset(veh_t *v);
+void veh_set_mode(veh_t *v, veh_mode_t m);
+void veh_leg_start(veh_t *v, const float dest[3]);
+void veh_leg_start_from(veh_t *v, const float origin[3], const float dest[3]);
+float veh_dist_xy(const float a[3], const float b[3]);
+float veh_dist3(const float a[3], const float b[3]);
+void veh_disarm(veh_t *v, const char *why);
+bool veh_arm(veh_t *v);
+const char *veh_mode_name(veh_mode_t m);
+
+/* location of a mission command in the NED frame (z: relative altitude down) */
+void veh_cmd_location(const veh_t *v, const mt_mission_cmd_t *c, float out[3], bool *has_xy);
+
+/* log records (logger.c), main-loop thread only */
+#define VEH_LOG_ATT 1u
+#define VEH_LOG_POS 2u
+#define VEH_LOG_CTUN 3u
+#define VEH_LOG_BARO 4u
+#define VEH_LOG_GPS 5u
+#define VEH_LOG_CMD 6u
+#define VEH_LOG_EV 7u
+#define VEH_LOG_BATT 8u
+void veh_log_init(veh_t *v);
+void veh_log_record(veh_t *v, uint8_t type, const uint8_t *payload, uint8_t len);
+void veh_log_cmd(veh_t *v, uint16_t index, uint16_t id, uint8_t event);
+void veh_log_event(veh_t *v, uint8_t event, uint8_t arg);
+
+/* console */
+uint64_t veh_now(const veh_t *v);
+void veh_say(veh_t *v, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+#endif /* VEH_INT_H */
