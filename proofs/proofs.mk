@@ -4,13 +4,13 @@
 #   make prove          tools/bootstrap.sh prove, then every proof part (for now: wp)
 #   make wp             Frama-C/WP on every kernel module + the data-type laws, 2 modules at a
 #                       time, then proofs/wp/gate.py (fails unless 100 % goals + smoke tests)
-#   make wp-<module>    one module (status time sem proc ring objring sched mission wq laws), no gate
+#   make wp-<module>    one module (status time sem proc ring objring sched mission wq bus laws), no gate
 #   make wp-gate        the gate alone, on the last reports
 #   make wp-diversity   Z3 alone and CVC4 alone, regenerates proofs/wp/diversity.md
 #   make wp-clean       drop the WP sessions and caches
 #
-# kernel/src/invoke.c and mission_invoke.c are not analysed: assumption A1 (kernel/src/mt_invoke.h,
-# kernel/src/mt_mission_invoke.h).
+# kernel/src/invoke.c, mission_invoke.c and bus_invoke.c are not analysed: assumption A1
+# (kernel/src/mt_invoke.h, kernel/src/mt_mission_invoke.h, kernel/src/mt_bus_invoke.h).
 
 BUILD ?= build
 
@@ -19,8 +19,8 @@ WP_DIR       ?= $(WP_ROOT)/wp
 WP_WHY3CONF  := $(WP_ROOT)/why3.conf
 # Longest first (make -j starts them in this order, so the slowest module does not start
 # last and leave one core idle at the end); modules not named here follow, alphabetically.
-WP_ORDER     := mission sched wq ring objring proc laws sem time status
-WP_ALL_MODS  := $(filter-out invoke mission_invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws
+WP_ORDER     := mission sched wq bus ring objring proc laws sem time status
+WP_ALL_MODS  := $(filter-out invoke mission_invoke bus_invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws
 WP_MODULES   := $(filter $(WP_ALL_MODS),$(WP_ORDER)) $(filter-out $(WP_ORDER),$(WP_ALL_MODS))
 # Per proof goal; smoke tests have their own limit (-wp-smoke-timeout, 2 s by default). The
 # slowest passing goal takes about 7 s on an idle 2-core machine: 20 s leaves room for a loaded
@@ -41,16 +41,17 @@ WP_INC       := -Ikernel/include -Ikernel/port -Ikernel/spec -Ikernel/src
 # Sources per module: kernel/src/<m>.c, or every file of proofs/wp/laws/ for `laws`.
 WP_SRC_laws  := $(wildcard proofs/wp/laws/*.c)
 wp_src        = $(or $(WP_SRC_$(1)),kernel/src/$(1).c)
-# Memory model per module. objring takes `void *` objects and handles them as bytes only; WP's
-# Typed model reads void* as sint8*, so the void* -> uint8_t* casts need +cast (keeps the
-# pointer value). Sound there because the module never accesses those bytes as another type;
-# gate.py accepts exactly that cast warning, in that module only.
+# Memory model per module. objring and bus take `void *` objects (messages) and handle them as
+# bytes only; WP's Typed model reads void* as sint8*, so the void* -> uint8_t* casts need +cast
+# (keeps the pointer value). Sound there because those modules never access those bytes as
+# another type; gate.py accepts exactly that cast warning, in those modules only.
 WP_MODEL_objring := Typed+cast
 # The work queue's void * entry points (mt_work_notify_i, mt_wq_timer_proc, mt_wq_thread_body:
 # the callback shapes of the bus, the proc sets and the port threads) convert their argument
 # back to the mt_work_t / mt_wq_t it is; +cast keeps the pointer value. Sound because those
 # objects are only ever accessed with their own type; gate.py accepts exactly these casts.
 WP_MODEL_wq := Typed+cast
+WP_MODEL_bus     := Typed+cast
 wp_model      = $(or $(WP_MODEL_$(1)),Typed)
 
 # WP_SMOKE=no drops the smoke tests (only for the prover-diversity runs, which compare goals).

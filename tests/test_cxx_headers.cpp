@@ -23,7 +23,10 @@ static_assert(MT_E_TASK_COUNT == 11 && MT_E_LOOP_RATE == 12 && MT_E_TASK_FN == 1
 static_assert(MT_W_DROPPED_OLDEST == 14 && MT_E_MISSION_CMD == 15 && MT_E_MISSION_PARAM == 16, "");
 static_assert(MT_E_MISSION_LOCATION == 17 && MT_E_MISSION_FRAME == 18 && MT_E_MISSION_JUMP == 19, "");
 static_assert(MT_E_MISSION_LOOP == 20 && MT_E_MISSION_SIZE == 21 && MT_E_MISSION_SYNTAX == 22, "");
-static_assert(MT_E_STATE == 23 && MT_W_WQ_MERGED == 24 && MT_STATUS_COUNT == 25, "");
+static_assert(MT_E_STATE == 23 && MT_W_WQ_MERGED == 24, "");
+static_assert(MT_E_BUS_MSG_SIZE == 25 && MT_E_BUS_QUEUE_LEN == 26, "");
+static_assert(MT_E_BUS_STORAGE == 27 && MT_E_BUS_BEHIND == 28 && MT_E_BUS_TORN == 29, "");
+static_assert(MT_W_BUS_MISSED == 30 && MT_STATUS_COUNT == 31, "");
 
 // configuration defaults
 static_assert(MT_CFG_VERSION == 1, "");
@@ -45,6 +48,9 @@ static_assert(std::is_same<decltype(&mt_work_notify_i), void (*)(void *)>::value
               "a publish callback shape");
 static_assert(std::is_same<decltype(&mt_wq_timer_proc), mt_proc_fn_t>::value, "a proc");
 static_assert(std::is_same<decltype(&mt_wq_thread_body), mt_thread_fn_t>::value, "a thread body");
+static_assert(MT_CFG_BUS_MAX_MSG == 256u && MT_CFG_BUS_MAX_QUEUE == 16u, "");
+static_assert(MT_CFG_BUS_MAX_NOTIFY == 4u && MT_CFG_BUS_MAX_RELIABLE == 2u, "");
+static_assert(MT_CFG_BUS_COPY_TRIES == 3u, "");
 
 // mission commands: 32 bytes, no padding
 static_assert(sizeof(mt_mission_cmd_t) == 32u, "");

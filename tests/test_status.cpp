@@ -41,6 +41,12 @@ const Named kAll[] = {
     {MT_E_MISSION_SYNTAX, "MT_E_MISSION_SYNTAX"},
     {MT_E_STATE, "MT_E_STATE"},
     {MT_W_WQ_MERGED, "MT_W_WQ_MERGED"},
+    {MT_E_BUS_MSG_SIZE, "MT_E_BUS_MSG_SIZE"},
+    {MT_E_BUS_QUEUE_LEN, "MT_E_BUS_QUEUE_LEN"},
+    {MT_E_BUS_STORAGE, "MT_E_BUS_STORAGE"},
+    {MT_E_BUS_BEHIND, "MT_E_BUS_BEHIND"},
+    {MT_E_BUS_TORN, "MT_E_BUS_TORN"},
+    {MT_W_BUS_MISSED, "MT_W_BUS_MISSED"},
 };
 
 TEST(Status, ValuesDistinctAndBelowCount)

@@ -35,6 +35,12 @@ const char *mt_status_str(mt_status_t st)
     case MT_E_MISSION_SYNTAX: name = "MT_E_MISSION_SYNTAX"; break;
     case MT_E_STATE: name = "MT_E_STATE"; break;
     case MT_W_WQ_MERGED: name = "MT_W_WQ_MERGED"; break;
+    case MT_E_BUS_MSG_SIZE: name = "MT_E_BUS_MSG_SIZE"; break;
+    case MT_E_BUS_QUEUE_LEN: name = "MT_E_BUS_QUEUE_LEN"; break;
+    case MT_E_BUS_STORAGE: name = "MT_E_BUS_STORAGE"; break;
+    case MT_E_BUS_BEHIND: name = "MT_E_BUS_BEHIND"; break;
+    case MT_E_BUS_TORN: name = "MT_E_BUS_TORN"; break;
+    case MT_W_BUS_MISSED: name = "MT_W_BUS_MISSED"; break;
     case MT_STATUS_COUNT:
     default: name = "MT_STATUS_?"; break;
     }

@@ -47,6 +47,37 @@
 #define MT_CFG_WQ_MAX_ITEMS 16u
 #endif
 
+/** Topic bus: largest message in bytes (uORB's largest messages are a few hundred
+ *  bytes). A copy of one message is the longest stretch a subscriber spends in its
+ *  lock-free copy loop. */
+#if !defined(MT_CFG_BUS_MAX_MSG)
+#define MT_CFG_BUS_MAX_MSG 256u
+#endif
+
+/** Topic bus: longest message queue of one topic (uORB's command topics use 8). Each
+ *  topic keeps one 32-bit stamp per possible slot. */
+#if !defined(MT_CFG_BUS_MAX_QUEUE)
+#define MT_CFG_BUS_MAX_QUEUE 16u
+#endif
+
+/** Topic bus: notifiers per topic (poll wake-ups and gated callbacks such as the work
+ *  queue's subscription callback). */
+#if !defined(MT_CFG_BUS_MAX_NOTIFY)
+#define MT_CFG_BUS_MAX_NOTIFY 4u
+#endif
+
+/** Topic bus: reliable subscribers per reliable topic (a publish that would overwrite a
+ *  message one of them has not consumed is refused). */
+#if !defined(MT_CFG_BUS_MAX_RELIABLE)
+#define MT_CFG_BUS_MAX_RELIABLE 2u
+#endif
+
+/** Topic bus: attempts of one lock-free copy before it gives up with MT_E_BUS_TORN (each
+ *  failed attempt saw the slot overwritten by a publisher while it copied). */
+#if !defined(MT_CFG_BUS_COPY_TRIES)
+#define MT_CFG_BUS_COPY_TRIES 3u
+#endif
+
 #if (MT_CFG_SCHED_MAX_TASKS < 1u) || (MT_CFG_SCHED_MAX_TASKS > 255u)
 #error "MT_CFG_SCHED_MAX_TASKS must be in [1, 255]"
 #endif
@@ -64,6 +95,21 @@
 
 #if (MT_CFG_WQ_MAX_ITEMS < 1u) || (MT_CFG_WQ_MAX_ITEMS > 64u)
 #error "MT_CFG_WQ_MAX_ITEMS must be in [1, 64]"
+#endif
+#if (MT_CFG_BUS_MAX_MSG < 1u) || (MT_CFG_BUS_MAX_MSG > 65536u)
+#error "MT_CFG_BUS_MAX_MSG must be in [1, 65536]"
+#endif
+#if (MT_CFG_BUS_MAX_QUEUE < 1u) || (MT_CFG_BUS_MAX_QUEUE > 1024u)
+#error "MT_CFG_BUS_MAX_QUEUE must be in [1, 1024]"
+#endif
+#if (MT_CFG_BUS_MAX_NOTIFY < 1u) || (MT_CFG_BUS_MAX_NOTIFY > 64u)
+#error "MT_CFG_BUS_MAX_NOTIFY must be in [1, 64]"
+#endif
+#if (MT_CFG_BUS_MAX_RELIABLE < 1u) || (MT_CFG_BUS_MAX_RELIABLE > 64u)
+#error "MT_CFG_BUS_MAX_RELIABLE must be in [1, 64]"
+#endif
+#if (MT_CFG_BUS_COPY_TRIES < 1u) || (MT_CFG_BUS_COPY_TRIES > 64u)
+#error "MT_CFG_BUS_COPY_TRIES must be in [1, 64]"
 #endif
 
 #endif /* MT_CONFIG_H */

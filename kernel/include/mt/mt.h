@@ -6,6 +6,7 @@
 #ifndef MT_MT_H
 #define MT_MT_H
 
+#include "mt/bus.h"
 #include "mt/config.h"
 #include "mt/mission.h"
 #include "mt/objring.h"

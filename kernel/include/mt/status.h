@@ -54,7 +54,18 @@ typedef enum {
     MT_W_WQ_MERGED = 24,     /**< Work queue: the item was already queued; this activation
                                   merged into its pending run (counted in the item's and the
                                   queue's `merged`). */
-    MT_STATUS_COUNT = 25     /**< Number of statuses (sentinel, not a status). */
+    MT_E_BUS_MSG_SIZE = 25,  /**< Topic bus: message size 0 or above MT_CFG_BUS_MAX_MSG at init,
+                                  or a publish/copy size that is not the topic's. */
+    MT_E_BUS_QUEUE_LEN = 26, /**< Topic bus: queue length 0 or above MT_CFG_BUS_MAX_QUEUE. */
+    MT_E_BUS_STORAGE = 27,   /**< Topic bus: storage NULL or smaller than
+                                  MT_BUS_STORAGE_BYTES(msg_size, queue_len). */
+    MT_E_BUS_BEHIND = 28,    /**< Topic bus: a reliable subscriber has not consumed the oldest
+                                  queued message; nothing published (counted in `rejected`). */
+    MT_E_BUS_TORN = 29,      /**< Topic bus: every copy attempt was overwritten by a publisher
+                                  while it copied; nothing delivered (counted in `torn`). */
+    MT_W_BUS_MISSED = 30,    /**< Topic bus: copied, but messages had left the queue before the
+                                  subscriber reached them (counted in `missed`). */
+    MT_STATUS_COUNT = 31     /**< Number of statuses (sentinel, not a status). */
 } mt_status_t;
 
 /** Short stable name of a status ("MT_E_FULL"); "MT_STATUS_?" for an unknown value. */

@@ -1,0 +1,626 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file mt/bus.h
+ * @brief Topic bus (uORB-style publish/subscribe): static topics with a queue of
+ *        one or more messages, lock-free subscriber copies, exact loss accounting,
+ *        rate-limited subscriptions, poll, gated notifiers and reliable topics.
+ *
+ * Operating rules
+ * - A topic is declared statically (mt_topic_desc_t, MT_TOPIC_DESC) with storage of
+ *   MT_BUS_STORAGE_BYTES(msg_size, queue_len) bytes supplied by the application.
+ * - Publishers: any number, in task (mt_topic_publish), interrupt (_isr) or lock-held
+ *   (_i) context. Every publish runs under the kernel lock, so publishers are
+ *   serialised; a publish never blocks and its time is bounded by one message copy
+ *   plus the topic's notifiers.
+ * - Generation: each publish moves the topic's 32-bit generation to the next value
+ *   (0xFFFFFFFF is followed by 0). Every distance between generations is computed
+ *   by a case split (MtGenDist), never by a wrapping subtraction. A subscriber
+ *   must look at its topic (copy or updated) at least once per 2^32 - 1
+ *   publications, or its distances alias (assumption G1).
+ * - Torn reads (design decision): subscribers copy WITHOUT the kernel lock, seqlock
+ *   style. The publisher stamps the slot with the new generation (store + release
+ *   fence), writes the bytes (relaxed), then publishes head and generation (release).
+ *   The subscriber loads the generation (acquire), checks the slot's stamp, copies
+ *   (relaxed), and re-checks the stamp after an acquire fence (mt_seq_recheck_u32):
+ *   a publisher that overwrote any byte of the slot during the copy has changed the
+ *   stamp, and the attempt is discarded. After MT_CFG_BUS_COPY_TRIES discarded
+ *   attempts the copy returns MT_E_BUS_TORN (counted in `torn`), never a mixed
+ *   message. Why: the alternative (copy under the kernel lock) keeps interrupts
+ *   masked for up to MT_CFG_BUS_MAX_MSG bytes per subscriber copy, which is the
+ *   interrupt latency uORB pays; here only the publisher's own copy runs with the
+ *   lock held. The interleavings are checked by tla/TopicBus.tla (NoTornRead); the
+ *   contracts below are sequential (assumption C2) and leave the outcome of the stamp
+ *   re-check free (assumption C3).
+ * - Missed messages, defined: a message is missed by a subscriber when it had left
+ *   the queue (was overwritten) before the subscriber read the generation in the
+ *   copy that passed over it. copy_next on a subscriber more than queue_len
+ *   messages behind jumps to the oldest retained message and adds the overwritten
+ *   ones to `missed`. Messages that copy_latest passes over while they are still
+ *   retained are counted in `skipped`, not in `missed`: the subscriber chose the
+ *   newest. So every message published after a subscriber's init is exactly one of
+ *   received, missed, skipped or pending (TopicBus.tla, AccountingExact).
+ * - Rate-limited subscriptions (uORB SubscriptionInterval): with interval_us > 0,
+ *   mt_sub_updated() reports an update only once interval_us passed since the last
+ *   update; every successful copy moves the last-update time forward by one interval,
+ *   clamped to [now - interval, now] (MtClampNext). Copies themselves are not gated.
+ * - Notifiers: each topic calls up to MT_CFG_BUS_MAX_NOTIFY notifiers on publish,
+ *   with the kernel lock held (I-class), through mt_bus_invoke_notify (assumption
+ *   A1: a notifier returns, keeps the lock, and writes neither the topic nor another
+ *   topic's publish path; it must not publish). A notifier has a count gate (called
+ *   once at least min_updates publications happened since its last call) and an
+ *   interval gate (interval_us, the rule above); a publish that a gate holds back is
+ *   counted in `gated`. There is no timer: a held-back notifier is called by a later
+ *   publish. A work queue points fn at its schedule function (uORB's
+ *   SubscriptionCallback); mt_sub_poll_enable registers the subscriber's semaphore.
+ * - Reliable topics (MT_TOPIC_RELIABLE): a publish that would overwrite a message a
+ *   registered reliable subscriber has not consumed is refused with MT_E_BUS_BEHIND
+ *   and counted in `rejected` (PX4 #26217); a reliable subscriber never misses.
+ * - Ownership: publishers own the topic fields above `rel_gen` (lock held);
+ *   reliable subscriber i owns rel_gen[i] (release store, read by publishers with
+ *   acquire); a subscriber object belongs to one thread, which alone calls the
+ *   mt_sub_* functions on it.
+ */
+#ifndef MT_BUS_H
+#define MT_BUS_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "mt/config.h"
+#include "mt/sem.h"
+#include "mt/status.h"
+#include "mt_port.h"
+#include "mt_spec.h"
+#include "mt_spec_bus.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Topic flag: publishes are refused while a reliable subscriber lags (see above). */
+#define MT_TOPIC_RELIABLE 1u
+
+/** Storage bytes of a topic: queue_len messages of msg_size bytes. */
+#define MT_BUS_STORAGE_BYTES(msg_size, queue_len) ((uint32_t)(msg_size) * (uint32_t)(queue_len))
+
+/** Static declaration of a topic: name, message type, queue length, flags. */
+#define MT_TOPIC_DESC(name_, type_, queue_len_, flags_)                                         \
+    {(name_), (uint32_t)sizeof(type_), (uint32_t)(queue_len_), (uint32_t)(flags_), 0u}
+
+/** Notifier callback (called with the kernel lock held). */
+typedef void (*mt_bus_notify_fn_t)(void *arg);
+
+/** A topic's static description. */
+typedef struct {
+    const char *name;   /**< for reports (not copied) */
+    uint32_t msg_size;  /**< bytes per message, 1..MT_CFG_BUS_MAX_MSG */
+    uint32_t queue_len; /**< messages retained, 1..MT_CFG_BUS_MAX_QUEUE */
+    uint32_t flags;     /**< 0 or MT_TOPIC_RELIABLE */
+    uint32_t first_gen; /**< generation before the first publish (0; tests start near
+                             UINT32_MAX to exercise the wrap) */
+} mt_topic_desc_t;
+
+typedef struct {
+    /* publisher side: written with the kernel lock held */
+    uint32_t gen;                          /**< generation of the newest message (release) */
+    uint32_t head;                         /**< slot of the newest message, [0, qlen) */
+    uint32_t published;                    /**< 0 before the first publish, then 1 (release) */
+    uint32_t stamp[MT_CFG_BUS_MAX_QUEUE];  /**< generation whose bytes each slot holds or is
+                                                being overwritten with (seqlock stamp) */
+    uint32_t publishes;                    /**< accepted publishes (saturating) */
+    uint32_t rejected;                     /**< refused publishes: size, behind (saturating) */
+    uint32_t notified;                 /**< notifier calls made (saturating) */
+    /* notifiers, one column per field (WP frames whole columns cheaply); entry i is
+       registered when i < nnotify; fn, arg, min_updates, interval_us constant then */
+    uint32_t nnotify;                                      /**< registered notifiers */
+    mt_bus_notify_fn_t notify_fn[MT_CFG_BUS_MAX_NOTIFY];   /**< callback */
+    void *notify_arg[MT_CFG_BUS_MAX_NOTIFY];               /**< its argument */
+    uint32_t notify_min_updates[MT_CFG_BUS_MAX_NOTIFY];    /**< count gate, >= 1 */
+    uint32_t notify_interval_us[MT_CFG_BUS_MAX_NOTIFY];    /**< interval gate, 0: none */
+    uint32_t notify_last_gen[MT_CFG_BUS_MAX_NOTIFY];       /**< generation at the last call
+                                                                (or registration) */
+    uint64_t notify_last_us[MT_CFG_BUS_MAX_NOTIFY];        /**< interval gate's last update */
+    uint32_t notify_calls[MT_CFG_BUS_MAX_NOTIFY];          /**< calls made (saturating) */
+    uint32_t notify_gated[MT_CFG_BUS_MAX_NOTIFY];          /**< publishes a gate held back
+                                                                (saturating) */
+    uint32_t nrel;                         /**< registered reliable subscribers */
+    /* subscriber side */
+    uint32_t rel_gen[MT_CFG_BUS_MAX_RELIABLE]; /**< generation consumed by reliable
+                                                    subscriber i (written by it, release) */
+    /* constant after init */
+    const char *name;
+    uint8_t *buf;      /**< qlen slots of size bytes */
+    uint32_t size;     /**< bytes per message */
+    uint32_t qlen;     /**< slots */
+    uint32_t reliable; /**< 1 for a MT_TOPIC_RELIABLE topic */
+} mt_topic_t;
+
+typedef struct {
+    mt_topic_t *topic;    /**< constant after init */
+    uint32_t gen;         /**< generation of the last message consumed (received, missed or
+                               skipped) */
+    uint32_t interval_us; /**< minimum interval between updates (0: none) */
+    uint64_t last_us;     /**< last-update time of the interval gate */
+    uint32_t received;    /**< new messages copied (saturating) */
+    uint32_t missed;      /**< messages that left the queue before this subscriber reached
+                               them (saturating; exact below saturation) */
+    uint32_t skipped;     /**< retained messages copy_latest passed over (saturating) */
+    uint32_t torn;        /**< copies given up with MT_E_BUS_TORN (saturating) */
+    uint32_t rel;         /**< reliable slot + 1, 0: not reliable */
+    uint32_t notify;      /**< poll notifier slot + 1, 0: poll not enabled */
+    mt_sem_t sem;         /**< poll wake-up */
+} mt_sub_t;
+
+/* MtTopicBehind: some registered reliable subscriber has not consumed the oldest queued
+ * message. */
+/*@ predicate MtTopicInv(mt_topic_t *t) =
+        \valid(t) &&
+        1 <= t->size <= MT_CFG_BUS_MAX_MSG && 1 <= t->qlen <= MT_CFG_BUS_MAX_QUEUE &&
+        t->head < t->qlen && t->published <= 1 && t->reliable <= 1 &&
+        t->nnotify <= MT_CFG_BUS_MAX_NOTIFY && t->nrel <= MT_CFG_BUS_MAX_RELIABLE &&
+        (t->reliable == 0 ==> t->nrel == 0) &&
+        \valid(t->buf + (0 .. t->size * t->qlen - 1)) &&
+        \separated(t, t->buf + (0 .. t->size * t->qlen - 1));
+
+    predicate MtSubInv(mt_sub_t *s) =
+        \valid(s) && MtTopicInv(s->topic) && \separated(s, s->topic) &&
+        \separated(s, s->topic->buf + (0 .. s->topic->size * s->topic->qlen - 1)) &&
+        s->rel <= s->topic->nrel && s->notify <= s->topic->nnotify &&
+        MtSemInv(&s->sem);
+
+    predicate MtTopicBehind(mt_topic_t *t) =
+        \exists integer i; 0 <= i < t->nrel && MtGenDist(t->gen, t->rel_gen[i]) >= t->qlen;
+
+    predicate MtNotifyRegistered(mt_topic_t *t, mt_bus_notify_fn_t fn, void *arg) =
+        \exists integer i; 0 <= i < t->nnotify && t->notify_fn[i] == fn && t->notify_arg[i] == arg;
+
+    logic integer MtSubPending(mt_sub_t *s) = MtGenDist(s->topic->gen, s->gen);
+
+*/
+
+/** Initialise a topic from its description over storage of storage_bytes bytes. [init]
+ *  @retval MT_OK
+ *  @retval MT_E_INVALID d->name is NULL or d->flags is not 0 or MT_TOPIC_RELIABLE.
+ *  @retval MT_E_BUS_MSG_SIZE d->msg_size is 0 or above MT_CFG_BUS_MAX_MSG.
+ *  @retval MT_E_BUS_QUEUE_LEN d->queue_len is 0 or above MT_CFG_BUS_MAX_QUEUE.
+ *  @retval MT_E_BUS_STORAGE storage is NULL or storage_bytes is below
+ *          MT_BUS_STORAGE_BYTES(msg_size, queue_len).
+ *  On an error the topic is left unusable (size 0). */
+/*@ requires valid: \valid(t) && \valid_read(d) && \separated(t, d);
+    requires storage: storage != \null ==>
+        \valid((uint8_t *)storage + (0 .. storage_bytes - 1)) &&
+        \separated(t, (uint8_t *)storage + (0 .. storage_bytes - 1));
+    assigns *t;
+    behavior invalid:
+      assumes d->name == \null || (d->flags != 0 && d->flags != MT_TOPIC_RELIABLE);
+      ensures status: \result == MT_E_INVALID;
+      ensures unusable: t->size == 0;
+    behavior msg_size:
+      assumes d->name != \null && (d->flags == 0 || d->flags == MT_TOPIC_RELIABLE);
+      assumes d->msg_size < 1 || d->msg_size > MT_CFG_BUS_MAX_MSG;
+      ensures status: \result == MT_E_BUS_MSG_SIZE;
+      ensures unusable: t->size == 0;
+    behavior queue_len:
+      assumes d->name != \null && (d->flags == 0 || d->flags == MT_TOPIC_RELIABLE);
+      assumes 1 <= d->msg_size <= MT_CFG_BUS_MAX_MSG;
+      assumes d->queue_len < 1 || d->queue_len > MT_CFG_BUS_MAX_QUEUE;
+      ensures status: \result == MT_E_BUS_QUEUE_LEN;
+      ensures unusable: t->size == 0;
+    behavior storage:
+      assumes d->name != \null && (d->flags == 0 || d->flags == MT_TOPIC_RELIABLE);
+      assumes 1 <= d->msg_size <= MT_CFG_BUS_MAX_MSG;
+      assumes 1 <= d->queue_len <= MT_CFG_BUS_MAX_QUEUE;
+      assumes storage == \null || storage_bytes < d->msg_size * d->queue_len;
+      ensures status: \result == MT_E_BUS_STORAGE;
+      ensures unusable: t->size == 0;
+    behavior ok:
+      assumes d->name != \null && (d->flags == 0 || d->flags == MT_TOPIC_RELIABLE);
+      assumes 1 <= d->msg_size <= MT_CFG_BUS_MAX_MSG;
+      assumes 1 <= d->queue_len <= MT_CFG_BUS_MAX_QUEUE;
+      assumes storage != \null && storage_bytes >= d->msg_size * d->queue_len;
+      ensures status: \result == MT_OK;
+      ensures inv: MtTopicInv(t);
+      ensures shape: t->size == d->msg_size && t->qlen == d->queue_len &&
+                     t->reliable == (d->flags == MT_TOPIC_RELIABLE ? 1 : 0) && t->name == d->name;
+      ensures empty: t->gen == d->first_gen && t->published == 0 && t->nnotify == 0 &&
+                     t->nrel == 0;
+      ensures stats: t->publishes == 0 && t->rejected == 0 && t->notified == 0;
+    complete behaviors;
+    disjoint behaviors;
+*/
+mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage,
+                          uint32_t storage_bytes);
+
+/** Publish a copy of msg (size bytes). I-class: kernel lock held; never blocks.
+ *  Notifiers run before it returns.
+ *  @retval MT_OK published: generation advanced, oldest slot overwritten.
+ *  @retval MT_E_BUS_MSG_SIZE size is not the topic's message size (counted in rejected).
+ *  @retval MT_E_BUS_BEHIND reliable topic, a reliable subscriber has not consumed the
+ *          oldest queued message (counted in rejected; nothing written). */
+/*@ requires held: MtLocked == 1;
+    requires inv: MtTopicInv(t);
+    requires msg: size == t->size ==> \valid_read((uint8_t *)msg + (0 .. size - 1)) &&
+        \separated((uint8_t *)msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
+    assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
+            t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notified,
+            t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow;
+    ensures held: MtLocked == 1;
+    ensures inv: MtTopicInv(t);
+    behavior msg_size:
+      assumes size != t->size;
+      ensures status: \result == MT_E_BUS_MSG_SIZE;
+      ensures counted: t->rejected == MtSatInc(\old(t->rejected));
+      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
+                         t->publishes == \old(t->publishes);
+    behavior behind:
+      assumes size == t->size && MtTopicBehind(t);
+      ensures status: \result == MT_E_BUS_BEHIND;
+      ensures counted: t->rejected == MtSatInc(\old(t->rejected));
+      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
+                         t->publishes == \old(t->publishes);
+    behavior ok:
+      assumes size == t->size && !MtTopicBehind(t);
+      ensures status: \result == MT_OK;
+      ensures generation: t->gen == MtGenNext(\old(t->gen));
+      ensures slot: t->head == MtSlotNext(\old(t->head), t->qlen);
+      ensures stamped: t->stamp[t->head] == t->gen;
+      ensures data: \forall integer k; 0 <= k < t->size ==>
+          t->buf[t->head * t->size + k] == ((uint8_t *)msg)[k];
+      ensures others_kept: \forall integer k; 0 <= k < t->size * t->qlen ==>
+          (k < t->head * t->size || k >= t->head * t->size + t->size) ==>
+          t->buf[k] == \old(t->buf[k]);
+      ensures published: t->published == 1;
+      ensures counted: t->publishes == MtSatInc(\old(t->publishes)) &&
+                       t->rejected == \old(t->rejected);
+      ensures notified: \forall integer i; 0 <= i < t->nnotify ==>
+          (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
+           t->notify_gated[i] == \old(t->notify_gated[i]) && t->notify_last_gen[i] == t->gen &&
+           MtGenDist(t->gen, \old(t->notify_last_gen[i])) >= t->notify_min_updates[i]) ||
+          (t->notify_calls[i] == \old(t->notify_calls[i]) &&
+           t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
+           t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
+    complete behaviors;
+    disjoint behaviors;
+*/
+mt_status_t mt_topic_publish_i(mt_topic_t *t, const void *msg, uint32_t size);
+
+/** mt_topic_publish_i() from task context (takes the kernel lock). */
+/*@ requires not_held: MtLocked == 0;
+    requires inv: MtTopicInv(t);
+    requires msg: size == t->size ==> \valid_read((uint8_t *)msg + (0 .. size - 1)) &&
+        \separated((uint8_t *)msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
+    assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
+            t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notified,
+            t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked;
+    ensures released: MtLocked == 0;
+    ensures inv: MtTopicInv(t);
+    ensures status: \result == MT_OK || \result == MT_E_BUS_MSG_SIZE || \result == MT_E_BUS_BEHIND;
+    ensures generation: \result == MT_OK ==> t->gen == MtGenNext(\old(t->gen));
+    ensures refused: \result != MT_OK ==> t->gen == \old(t->gen) &&
+                     t->rejected == MtSatInc(\old(t->rejected));
+*/
+mt_status_t mt_topic_publish(mt_topic_t *t, const void *msg, uint32_t size);
+
+/** mt_topic_publish_i() from an interrupt handler. */
+/*@ requires not_held: MtLocked == 0;
+    requires inv: MtTopicInv(t);
+    requires msg: size == t->size ==> \valid_read((uint8_t *)msg + (0 .. size - 1)) &&
+        \separated((uint8_t *)msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
+    assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
+            t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notified,
+            t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked;
+    ensures released: MtLocked == 0;
+    ensures inv: MtTopicInv(t);
+    ensures status: \result == MT_OK || \result == MT_E_BUS_MSG_SIZE || \result == MT_E_BUS_BEHIND;
+    ensures generation: \result == MT_OK ==> t->gen == MtGenNext(\old(t->gen));
+    ensures refused: \result != MT_OK ==> t->gen == \old(t->gen) &&
+                     t->rejected == MtSatInc(\old(t->rejected));
+*/
+mt_status_t mt_topic_publish_isr(mt_topic_t *t, const void *msg, uint32_t size);
+
+/** Register fn(arg) as a notifier of t (task context; takes the kernel lock). It is
+ *  called, with the lock held, by a publish once min_updates publications happened
+ *  since its last call (or its registration) and, when interval_us > 0, once the
+ *  interval gate is open (MtDue; its last-update time then moves by MtClampNext).
+ *  @retval MT_OK
+ *  @retval MT_E_INVALID fn is NULL or min_updates is 0.
+ *  @retval MT_E_DUPLICATE the same (fn, arg) is already registered on t.
+ *  @retval MT_E_FULL MT_CFG_BUS_MAX_NOTIFY notifiers are registered. */
+/*@ requires not_held: MtLocked == 0;
+    requires inv: MtTopicInv(t);
+    assigns t->notify_fn[t->nnotify], t->notify_arg[t->nnotify], t->notify_min_updates[t->nnotify], t->notify_interval_us[t->nnotify], t->notify_last_gen[t->nnotify], t->notify_last_us[t->nnotify], t->notify_calls[t->nnotify], t->notify_gated[t->nnotify],
+            t->nnotify, MtLocked;
+    ensures released: MtLocked == 0;
+    ensures inv: MtTopicInv(t);
+    behavior invalid:
+      assumes fn == \null || min_updates == 0;
+      ensures status: \result == MT_E_INVALID;
+      ensures unchanged: t->nnotify == \old(t->nnotify);
+    behavior duplicate:
+      assumes fn != \null && min_updates != 0 && MtNotifyRegistered(t, fn, arg);
+      ensures status: \result == MT_E_DUPLICATE;
+      ensures unchanged: t->nnotify == \old(t->nnotify);
+    behavior full:
+      assumes fn != \null && min_updates != 0 && !MtNotifyRegistered(t, fn, arg);
+      assumes t->nnotify == MT_CFG_BUS_MAX_NOTIFY;
+      ensures status: \result == MT_E_FULL;
+      ensures unchanged: t->nnotify == \old(t->nnotify);
+    behavior ok:
+      assumes fn != \null && min_updates != 0 && !MtNotifyRegistered(t, fn, arg);
+      assumes t->nnotify < MT_CFG_BUS_MAX_NOTIFY;
+      ensures status: \result == MT_OK;
+      ensures appended: t->nnotify == \old(t->nnotify) + 1;
+      ensures entry: t->notify_fn[\old(t->nnotify)] == fn && t->notify_arg[\old(t->nnotify)] == arg &&
+          t->notify_min_updates[\old(t->nnotify)] == min_updates &&
+          t->notify_interval_us[\old(t->nnotify)] == interval_us &&
+          t->notify_last_gen[\old(t->nnotify)] == t->gen;
+      ensures fresh: t->notify_calls[\old(t->nnotify)] == 0 && t->notify_gated[\old(t->nnotify)] == 0 &&
+          t->notify_last_us[\old(t->nnotify)] == 0;
+    complete behaviors;
+    disjoint behaviors;
+*/
+mt_status_t mt_topic_notify_add(mt_topic_t *t, mt_bus_notify_fn_t fn, void *arg,
+                                uint32_t min_updates, uint32_t interval_us);
+
+/** Attach subscriber s to topic t with a minimum update interval (0: none). The
+ *  newest message published before the call, if any, is pending (uORB's initial
+ *  generation). [subscriber thread; no lock] */
+/*@ requires valid: \valid(s);
+    requires inv: MtTopicInv(t);
+    requires sep: \separated(s, t) && \separated(s, t->buf + (0 .. t->size * t->qlen - 1));
+    assigns *s;
+    ensures inv: MtSubInv(s);
+    ensures attached: s->topic == t && s->interval_us == interval_us && s->last_us == 0;
+    ensures pending: s->gen == (t->published == 1 ? MtGenBack(t->gen, 1) : t->gen);
+    ensures fresh: s->received == 0 && s->missed == 0 && s->skipped == 0 && s->torn == 0 &&
+                   s->rel == 0 && s->notify == 0;
+    ensures sem: s->sem.token == 0 && s->sem.waiter == \null;
+*/
+void mt_sub_init(mt_sub_t *s, mt_topic_t *t, uint32_t interval_us);
+
+/** Register s as a reliable subscriber of its topic (task context; takes the lock).
+ *  @retval MT_OK
+ *  @retval MT_E_STATE the topic was not declared MT_TOPIC_RELIABLE.
+ *  @retval MT_E_DUPLICATE s is already registered.
+ *  @retval MT_E_FULL MT_CFG_BUS_MAX_RELIABLE subscribers are registered. */
+/*@ requires not_held: MtLocked == 0;
+    requires inv: MtSubInv(s);
+    assigns s->rel, s->topic->rel_gen[s->topic->nrel], s->topic->nrel, MtLocked;
+    ensures released: MtLocked == 0;
+    ensures inv: MtSubInv(s);
+    behavior state:
+      assumes s->topic->reliable == 0;
+      ensures status: \result == MT_E_STATE;
+      ensures unchanged: s->rel == \old(s->rel) && s->topic->nrel == \old(s->topic->nrel);
+    behavior duplicate:
+      assumes s->topic->reliable == 1 && s->rel != 0;
+      ensures status: \result == MT_E_DUPLICATE;
+      ensures unchanged: s->rel == \old(s->rel) && s->topic->nrel == \old(s->topic->nrel);
+    behavior full:
+      assumes s->topic->reliable == 1 && s->rel == 0 && s->topic->nrel == MT_CFG_BUS_MAX_RELIABLE;
+      ensures status: \result == MT_E_FULL;
+      ensures unchanged: s->rel == \old(s->rel) && s->topic->nrel == \old(s->topic->nrel);
+    behavior ok:
+      assumes s->topic->reliable == 1 && s->rel == 0 && s->topic->nrel < MT_CFG_BUS_MAX_RELIABLE;
+      ensures status: \result == MT_OK;
+      ensures registered: s->topic->nrel == \old(s->topic->nrel) + 1 &&
+                          s->rel == s->topic->nrel && s->topic->rel_gen[s->rel - 1] == s->gen;
+    complete behaviors;
+    disjoint behaviors;
+*/
+mt_status_t mt_sub_reliable(mt_sub_t *s);
+
+/** Let mt_sub_poll() wait for s: registers a notifier that signals s->sem on every
+ *  publish (task context; takes the lock).
+ *  @retval MT_OK
+ *  @retval MT_E_DUPLICATE poll is already enabled for s.
+ *  @retval MT_E_FULL the topic has MT_CFG_BUS_MAX_NOTIFY notifiers. */
+/*@ requires not_held: MtLocked == 0;
+    requires inv: MtSubInv(s);
+    assigns s->notify, s->topic->notify_fn[s->topic->nnotify], s->topic->notify_arg[s->topic->nnotify], s->topic->notify_min_updates[s->topic->nnotify], s->topic->notify_interval_us[s->topic->nnotify], s->topic->notify_last_gen[s->topic->nnotify], s->topic->notify_last_us[s->topic->nnotify], s->topic->notify_calls[s->topic->nnotify], s->topic->notify_gated[s->topic->nnotify],
+            s->topic->nnotify, MtLocked;
+    ensures released: MtLocked == 0;
+    ensures inv: MtSubInv(s);
+    behavior duplicate:
+      assumes s->notify != 0;
+      ensures status: \result == MT_E_DUPLICATE;
+      ensures unchanged: s->notify == \old(s->notify) && s->topic->nnotify == \old(s->topic->nnotify);
+    behavior full:
+      assumes s->notify == 0 && s->topic->nnotify == MT_CFG_BUS_MAX_NOTIFY;
+      ensures status: \result == MT_E_FULL;
+      ensures unchanged: s->notify == 0 && s->topic->nnotify == \old(s->topic->nnotify);
+    behavior ok:
+      assumes s->notify == 0 && s->topic->nnotify < MT_CFG_BUS_MAX_NOTIFY;
+      ensures status: \result == MT_OK;
+      ensures registered: s->topic->nnotify == \old(s->topic->nnotify) + 1 &&
+          s->notify == s->topic->nnotify && s->topic->notify_arg[s->notify - 1] != \null &&
+          s->topic->notify_min_updates[s->notify - 1] == 1 &&
+          s->topic->notify_interval_us[s->notify - 1] == 0;
+    complete behaviors;
+    disjoint behaviors;
+*/
+mt_status_t mt_sub_poll_enable(mt_sub_t *s);
+
+/** Has a message been published since s last consumed one, and is the interval gate
+ *  open at now_us (MtDue)? Pure. [subscriber thread; no lock] */
+/*@ requires inv: MtSubInv(s);
+    assigns \nothing;
+    ensures updated: \result == \true <==>
+        (MtSubPending(s) != 0 && MtDue(s->last_us, s->interval_us, now_us));
+*/
+bool mt_sub_updated(const mt_sub_t *s, uint64_t now_us);
+
+/** Copy the next queued message into out (size bytes) and consume it; a subscriber more
+ *  than queue_len messages behind first jumps to the oldest retained message. now_us
+ *  feeds the interval gate (MtClampNext). [subscriber thread; no lock]
+ *  @retval MT_OK             the message after the last consumed one was copied.
+ *  @retval MT_W_BUS_MISSED   copied the oldest retained message; the messages before it
+ *                            that left the queue were added to `missed`.
+ *  @retval MT_E_EMPTY        nothing new (out untouched).
+ *  @retval MT_E_BUS_MSG_SIZE size is not the topic's message size (out untouched).
+ *  @retval MT_E_BUS_TORN     every attempt was overwritten during the copy (decided by the
+ *                            concurrent publisher, hence in both copying behaviours; counted
+ *                            in `torn`; nothing consumed; out holds no valid message). */
+/*@ requires inv: MtSubInv(s);
+    requires out: size == s->topic->size ==>
+        \valid((uint8_t *)out + (0 .. size - 1)) &&
+        \separated((uint8_t *)out + (0 .. size - 1), s, s->topic,
+                   s->topic->buf + (0 .. s->topic->size * s->topic->qlen - 1));
+    assigns s->gen, s->last_us, s->received, s->missed, s->skipped, s->torn,
+            s->topic->rel_gen[0 .. MT_CFG_BUS_MAX_RELIABLE - 1], ((uint8_t *)out)[0 .. size - 1];
+    ensures inv: MtSubInv(s);
+    ensures topic_kept: s->topic->gen == \old(s->topic->gen) && s->topic->head == \old(s->topic->head);
+    ensures skipped_kept: s->skipped == \old(s->skipped);
+    behavior msg_size:
+      assumes size != s->topic->size;
+      ensures status: \result == MT_E_BUS_MSG_SIZE;
+      ensures unchanged: s->gen == \old(s->gen) && s->torn == \old(s->torn);
+    behavior empty:
+      assumes size == s->topic->size && MtSubPending(s) == 0;
+      ensures status: \result == MT_E_EMPTY;
+      ensures unchanged: s->gen == \old(s->gen) && s->torn == \old(s->torn);
+    behavior next:
+      assumes size == s->topic->size && 1 <= MtSubPending(s) <= s->topic->qlen;
+      ensures status: \result == MT_OK || \result == MT_E_BUS_TORN;
+      ensures consumed: \result == MT_OK ==> s->gen == MtGenNext(\old(s->gen)) &&
+          s->missed == \old(s->missed) && s->received == MtSatInc(\old(s->received)) &&
+          s->last_us == MtClampNext(\old(s->last_us), s->interval_us, now_us) &&
+          (s->rel != 0 ==> s->topic->rel_gen[s->rel - 1] == s->gen);
+      ensures data: \result == MT_OK ==> \forall integer k; 0 <= k < s->topic->size ==>
+          ((uint8_t *)out)[k] == \old(s->topic->buf[MtSlotBack(s->topic->head,
+              MtNextDist(MtGenDist(s->topic->gen, s->gen), s->topic->qlen), s->topic->qlen) *
+              s->topic->size + k]);
+      ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
+          s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
+    behavior lapped:
+      assumes size == s->topic->size && MtSubPending(s) > s->topic->qlen;
+      ensures status: \result == MT_W_BUS_MISSED || \result == MT_E_BUS_TORN;
+      ensures oldest: \result == MT_W_BUS_MISSED ==>
+          s->gen == MtGenBack(s->topic->gen, s->topic->qlen - 1) &&
+          s->received == MtSatInc(\old(s->received)) &&
+          s->last_us == MtClampNext(\old(s->last_us), s->interval_us, now_us) &&
+          (s->rel != 0 ==> s->topic->rel_gen[s->rel - 1] == s->gen);
+      ensures missed_exact: \result == MT_W_BUS_MISSED ==>
+          s->missed == MtSatAdd(\old(s->missed), \old(MtSubPending(s)) - s->topic->qlen);
+      ensures data: \result == MT_W_BUS_MISSED ==> \forall integer k; 0 <= k < s->topic->size ==>
+          ((uint8_t *)out)[k] == \old(s->topic->buf[MtSlotBack(s->topic->head,
+              MtNextDist(MtGenDist(s->topic->gen, s->gen), s->topic->qlen), s->topic->qlen) *
+              s->topic->size + k]);
+      ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
+          s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
+    complete behaviors;
+    disjoint behaviors;
+*/
+mt_status_t mt_sub_copy_next(mt_sub_t *s, void *out, uint32_t size, uint64_t now_us);
+
+/** Copy the newest message into out (size bytes) and consume everything up to it,
+ *  whether or not it is new (uORB's copy). Retained messages passed over are added to
+ *  `skipped`, overwritten ones to `missed`. [subscriber thread; no lock]
+ *  @retval MT_OK             the newest message was copied.
+ *  @retval MT_W_BUS_MISSED   copied the newest message; messages between the last
+ *                            consumed one and it had left the queue (added to `missed`).
+ *  @retval MT_E_EMPTY        nothing was ever published (out untouched).
+ *  @retval MT_E_BUS_MSG_SIZE size is not the topic's message size (out untouched).
+ *  @retval MT_E_BUS_TORN     as mt_sub_copy_next (counted in `torn`). */
+/*@ requires inv: MtSubInv(s);
+    requires out: size == s->topic->size ==>
+        \valid((uint8_t *)out + (0 .. size - 1)) &&
+        \separated((uint8_t *)out + (0 .. size - 1), s, s->topic,
+                   s->topic->buf + (0 .. s->topic->size * s->topic->qlen - 1));
+    assigns s->gen, s->last_us, s->received, s->missed, s->skipped, s->torn,
+            s->topic->rel_gen[0 .. MT_CFG_BUS_MAX_RELIABLE - 1], ((uint8_t *)out)[0 .. size - 1];
+    ensures inv: MtSubInv(s);
+    ensures topic_kept: s->topic->gen == \old(s->topic->gen) && s->topic->head == \old(s->topic->head);
+    behavior msg_size:
+      assumes size != s->topic->size;
+      ensures status: \result == MT_E_BUS_MSG_SIZE;
+      ensures unchanged: s->gen == \old(s->gen) && s->torn == \old(s->torn);
+    behavior empty:
+      assumes size == s->topic->size && s->topic->published == 0;
+      ensures status: \result == MT_E_EMPTY;
+      ensures unchanged: s->gen == \old(s->gen) && s->torn == \old(s->torn);
+    behavior latest:
+      assumes size == s->topic->size && s->topic->published == 1 &&
+              MtSubPending(s) <= s->topic->qlen;
+      ensures status: \result == MT_OK || \result == MT_E_BUS_TORN;
+      ensures consumed: \result == MT_OK ==> s->gen == s->topic->gen &&
+          s->missed == \old(s->missed) &&
+          s->skipped == MtSatAdd(\old(s->skipped), \old(MtSubPending(s)) == 0 ? 0 : \old(MtSubPending(s)) - 1) &&
+          s->received == (\old(MtSubPending(s)) == 0 ? \old(s->received) : MtSatInc(\old(s->received))) &&
+          s->last_us == MtClampNext(\old(s->last_us), s->interval_us, now_us) &&
+          (s->rel != 0 ==> s->topic->rel_gen[s->rel - 1] == s->gen);
+      ensures data: \result == MT_OK ==> \forall integer k; 0 <= k < s->topic->size ==>
+          ((uint8_t *)out)[k] == \old(s->topic->buf[MtSlotBack(s->topic->head, 0, s->topic->qlen) *
+                                                     s->topic->size + k]);
+      ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
+          s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
+    behavior lapped:
+      assumes size == s->topic->size && s->topic->published == 1 &&
+              MtSubPending(s) > s->topic->qlen;
+      ensures status: \result == MT_W_BUS_MISSED || \result == MT_E_BUS_TORN;
+      ensures newest: \result == MT_W_BUS_MISSED ==> s->gen == s->topic->gen &&
+          s->skipped == MtSatAdd(\old(s->skipped), s->topic->qlen - 1) &&
+          s->received == MtSatInc(\old(s->received)) &&
+          s->last_us == MtClampNext(\old(s->last_us), s->interval_us, now_us) &&
+          (s->rel != 0 ==> s->topic->rel_gen[s->rel - 1] == s->gen);
+      ensures missed_exact: \result == MT_W_BUS_MISSED ==>
+          s->missed == MtSatAdd(\old(s->missed), \old(MtSubPending(s)) - s->topic->qlen);
+      ensures data: \result == MT_W_BUS_MISSED ==> \forall integer k; 0 <= k < s->topic->size ==>
+          ((uint8_t *)out)[k] == \old(s->topic->buf[MtSlotBack(s->topic->head, 0, s->topic->qlen) *
+                                                     s->topic->size + k]);
+      ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
+          s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
+    complete behaviors;
+    disjoint behaviors;
+*/
+mt_status_t mt_sub_copy_latest(mt_sub_t *s, void *out, uint32_t size, uint64_t now_us);
+
+/** Wait up to timeout_us for a message s has not consumed (0: do not wait). The
+ *  interval gate is not applied (check mt_sub_updated() after a wake-up). Task
+ *  context (takes the lock; parks on s->sem).
+ *  @retval MT_OK        a message is pending, or a publish signalled s->sem while waiting.
+ *  @retval MT_E_TIMEOUT nothing pending within the timeout.
+ *  @retval MT_E_STATE   poll is not enabled for s (mt_sub_poll_enable).
+ *  @retval MT_E_BUSY    another thread is already polling s. */
+/*@ requires not_held: MtLocked == 0;
+    requires inv: MtSubInv(s);
+    assigns s->sem.token, s->sem.waiter, MtPortNow, MtLocked;
+    ensures released: MtLocked == 0;
+    ensures inv: MtSubInv(s);
+    behavior state:
+      assumes s->notify == 0;
+      ensures status: \result == MT_E_STATE;
+    behavior pending:
+      assumes s->notify != 0 && MtSubPending(s) != 0;
+      ensures status: \result == MT_OK;
+    behavior busy:
+      assumes s->notify != 0 && MtSubPending(s) == 0 && s->sem.waiter != \null;
+      ensures status: \result == MT_E_BUSY;
+    behavior no_wait:
+      assumes s->notify != 0 && MtSubPending(s) == 0 && s->sem.waiter == \null &&
+              timeout_us == 0;
+      ensures status: \result == MT_E_TIMEOUT;
+    behavior wait:
+      assumes s->notify != 0 && MtSubPending(s) == 0 && s->sem.waiter == \null &&
+              timeout_us > 0;
+      ensures status: \result == MT_OK || \result == MT_E_TIMEOUT;
+      ensures no_token_left: s->sem.token == 0;
+    complete behaviors;
+    disjoint behaviors;
+*/
+mt_status_t mt_sub_poll(mt_sub_t *s, uint64_t timeout_us);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MT_BUS_H */

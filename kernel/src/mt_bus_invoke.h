@@ -1,0 +1,44 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file mt_bus_invoke.h
+ * @brief The topic bus's indirect calls (kernel-private), in the style of mt_invoke.h.
+ *
+ * Proof assumption A1 (bus): a notifier returns with the kernel lock still held and
+ * writes neither the topic that calls it nor the kernel lock state; it must not publish
+ * (to any topic: the lock is held). It may signal a semaphore or schedule work. The
+ * bodies (bus_invoke.c) are the plain call and the poll wake-up, excluded from WP; CBMC
+ * replaces mt_bus_invoke_notify with a stub generated from its contract.
+ */
+#ifndef MT_BUS_INVOKE_H
+#define MT_BUS_INVOKE_H
+
+#include "mt/bus.h"
+#include "mt_spec.h"
+
+/** Call the notifier fn(arg). I-class: kernel lock held. */
+/*@ requires held: MtLocked == 1;
+    requires callable: fn != \null;
+    assigns MtPortNow;
+    ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
+*/
+void mt_bus_invoke_notify(mt_bus_notify_fn_t fn, void *arg);
+
+/** The poll notifier (registered by mt_sub_poll_enable, called only through
+ *  mt_bus_invoke_notify): mt_sem_signal_i() on the subscriber's semaphore `sem`.
+ *  The contract is A1's view of every notifier (nothing of the topic is written; the
+ *  semaphore it signals is outside the bus's contracts); WP never calls it directly. */
+/*@ requires held: MtLocked == 1;
+    assigns MtPortNow;
+    ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
+*/
+void mt_bus_invoke_wake(void *sem);
+
+/** The poll notifier's argument for sem: sem as `void *` (the pointer conversion is done
+ *  here, outside WP's typed memory model). */
+/*@ requires valid: \valid(sem);
+    assigns \nothing;
+    ensures not_null: \result != \null;
+*/
+void *mt_bus_invoke_wake_arg(mt_sem_t *sem);
+
+#endif /* MT_BUS_INVOKE_H */
