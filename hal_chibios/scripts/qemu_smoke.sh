@@ -125,6 +125,14 @@ echo "qemu-smoke: vehicle exit $RC, QEMU wall time ${SECS} s"
 [ "$RC" -eq 0 ] || bad "vehicle exit status $RC (expected 0)"
 grep -q '^RESULT: PASS' "$OUT/vehicle.run1.log" || bad "vehicle did not report RESULT: PASS"
 grep -q '^mission: COMPLETE' "$OUT/vehicle.run1.log" || bad "vehicle mission not complete"
+# the battery monitor ran on the work queue's own thread and its readings reached
+# housekeeping over the topic bus
+bat_runs="$(sed -n 's/^battery item: \([0-9]*\) runs.*/\1/p' "$OUT/vehicle.run1.log")"
+bat_got="$(sed -n 's/^topic battery: .*housekeeping: \([0-9]*\) received.*/\1/p' "$OUT/vehicle.run1.log")"
+if [ -z "$bat_runs" ] || [ "$bat_runs" -lt 100 ] || [ -z "$bat_got" ] ||
+    [ "$bat_got" -lt $((bat_runs - 2)) ]; then
+    bad "vehicle battery monitor: ${bat_runs:-no} work-item runs, ${bat_got:-no} readings received"
+fi
 # the same vehicle in SITL, same mission: the same commands in the same order
 if make --no-print-directory -C "$ROOT" BUILD="$BUILD" "$BUILD/sitl/metronome-sitl" \
         >"$OUT/sitl.build.log" 2>&1; then

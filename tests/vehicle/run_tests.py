@@ -125,6 +125,7 @@ def flight_ok(run, log=None):
     check(run.value(r"bus: \d+ transactions, \d+ waited for the bus, (\d+) timeouts") == 0, "bus timeouts")
     check(run.value(r"bus collisions (\d+)") == 0, "bus collisions")
     check(run.value(r"log: \d+ records, \d+ bytes to the sink, (\d+) dropped") == 0, "log records dropped")
+    battery_ok(run)
     if log is not None:
         data = open(log, "rb").read()
         recs, errors = logdump.read(data)
@@ -135,6 +136,27 @@ def flight_ok(run, log=None):
         check(len([c for c in cmds if c[3] == 1]) == run.value(r"mission: COMPLETE \((\d+) commands started"),
               "CMD start records vs commands started")
         check(any(c[3] == 3 for c in cmds), "no mission-complete record in the log")
+
+
+def battery_ok(run):
+    """The battery monitor (a 3 Hz interval work item) and its topic: one run per period of
+    the flight (the interval is measured from the item's starts), every reading published,
+    and every reading received by housekeeping or counted as missed, none lost silently."""
+    runs = run.value(r"battery item: (\d+) runs")
+    seconds = run.value(r"scheduler: loop \d+ Hz, \d+ tasks, (\d+) ticks") / 400.0
+    check(abs(runs - 3 * seconds) <= 2, "battery item ran %d times in %.1f s (3 Hz)" % (runs, seconds))
+    check(run.value(r"work queue \w+: \d+ runs, (\d+) merged") == 0, "merged activations")
+    check(run.value(r"work queue \w+: \d+ runs, \d+ merged, (\d+) periods missed") == 0, "periods missed")
+    m = re.search(r"interval ([0-9.]+) ms \(min ([0-9.]+), max ([0-9.]+)\)", run.out)
+    check(m is not None and abs(float(m.group(1)) - 333.3) < 2.0 and float(m.group(3)) < 340.0,
+          "battery interval %s" % (m.group(0) if m else None))
+    check(run.value(r"max [0-9.]+\), (\d+) failed reads") == 0, "battery reads failed")
+    pub = run.value(r"topic battery: (\d+) published")
+    check(pub == runs, "published %d of %d readings" % (pub, runs))
+    got = run.value(r"housekeeping: (\d+) received")
+    lost = run.value(r"housekeeping: \d+ received, (\d+) missed")
+    check(got + lost == pub or got + lost + 1 == pub, "received %d + missed %d vs published %d" % (got, lost, pub))
+    check(run.value(r"topic battery: \d+ published, (\d+) refused") == 0, "refused publishes")
 
 
 def t_plain(S):
@@ -277,7 +299,7 @@ def t_unreadable_mission(S):
 def t_realtime(S):
     """The hop mission on real threads (timer, IO, main loop) against the wall clock, in the
     ThreadSanitizer build: the vehicle's cross-thread data (barometer link, log ring, bus,
-    device registers) must be race-free."""
+    device registers, the battery topic written by the work-queue thread) must be race-free."""
     env = dict(os.environ, TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1")
     r = Run(S.sitl_tsan, ["--quiet", "--realtime", os.path.join(MISSIONS, "hop.waypoints")], timeout=120,
             env=env)
@@ -290,6 +312,10 @@ def t_realtime(S):
     check(r.value(r"bus collisions (\d+)") == 0, "bus collisions with real threads")
     check(r.value(r"log: \d+ records, \d+ bytes to the sink, (\d+) dropped") == 0, "log dropped")
     check(r.value(r"timer procs: (\d+) dispatches") > 5000, "the timer thread ran")
+    check(r.value(r"battery item: (\d+) runs") >= 3 * int(float(m.group(1))) - 2,
+          "the work-queue thread served the battery item")
+    check(r.value(r"housekeeping: (\d+) received") >= r.value(r"battery item: (\d+) runs") - 2,
+          "battery readings crossed from the work-queue thread to the main loop")
 
 
 def t_sanitizers(S):

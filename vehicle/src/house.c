@@ -1,46 +1,62 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file house.c
- * @brief housekeeping (3 Hz): the battery monitor, read over the shared bus
- *        (the barometer driver uses the same bus from the timer thread), and
- *        the health warnings; status_line (1 Hz): one console line.
+ * @brief housekeeping (3 Hz): the battery readings the battery monitor (a
+ *        work item, battery.c) publishes on the `battery` topic, and the
+ *        health warnings; status_line (1 Hz): one console line.
  */
 #include "veh_int.h"
 
-#define BUS_TIMEOUT_US 2000u
 #define BAT_LOW_V 13.6f
+
+/* One battery reading into the state and the log. */
+static void battery_take(veh_t *v, const veh_battery_msg_t *m)
+{
+    veh_state_t *s = &v->s;
+
+    s->bat_volt = (float)m->mv * 0.001f;
+    s->bat_amp = (float)m->ca * 0.01f;
+    s->bat_ok = s->bat_volt > BAT_LOW_V;
+    if (!s->bat_ok && s->armed && !s->bat_low_said) {
+        s->bat_low_said = true;
+        veh_say(v, "vehicle: battery low (%s V)", vp_float((char[16]){0}, 16u, s->bat_volt, 2u));
+    }
+    s->bat_last_us = m->t_us;
+    if (s->armed) {
+        uint8_t rec[12];
+        uint64_t t = veh_now(v); /* log records carry the time they are written */
+        uint32_t i;
+        for (i = 0u; i < 8u; i++) {
+            rec[i] = (uint8_t)(t >> (8u * i));
+        }
+        rec[8] = (uint8_t)m->mv;
+        rec[9] = (uint8_t)(m->mv >> 8);
+        rec[10] = (uint8_t)m->ca;
+        rec[11] = (uint8_t)(m->ca >> 8);
+        veh_log_record(v, VEH_LOG_BATT, rec, 12u);
+    }
+}
 
 void veh_housekeeping(veh_t *v)
 {
     veh_state_t *s = &v->s;
-    uint8_t rx[4];
+    veh_battery_msg_t m;
+    mt_status_t st;
 
-    if (veh_bus_read(&v->bus, v->plat, VEH_DEV_BATT, 0u, rx, 4u, BUS_TIMEOUT_US)) {
-        uint32_t w = ((uint32_t)rx[0] << 24) | ((uint32_t)rx[1] << 16) | ((uint32_t)rx[2] << 8) |
-                     (uint32_t)rx[3];
-        s->bat_volt = (float)(w >> 16) * 0.001f;
-        s->bat_amp = (float)(w & 0xFFFFu) * 0.01f;
-        s->bat_ok = s->bat_volt > BAT_LOW_V;
-        if (!s->bat_ok && s->armed && !s->bat_low_said) {
-            s->bat_low_said = true;
-            veh_say(v, "vehicle: battery low (%s V)",
-                    vp_float((char[16]){0}, 16u, s->bat_volt, 2u));
+    /* every reading published since the last run, oldest first (a reading that
+     * left the queue first is counted in the subscription's `missed`) */
+    for (;;) {
+        st = mt_sub_copy_next(&v->battery_sub, &m, (uint32_t)sizeof(m), veh_now(v));
+        if ((st != MT_OK) && (st != MT_W_BUS_MISSED)) {
+            break; /* MT_E_EMPTY: nothing new; MT_E_BUS_TORN: counted, next run */
         }
-        if (s->armed) {
-            uint8_t rec[12];
-            uint64_t t = veh_now(v);
-            uint32_t mv = (uint32_t)lroundf(s->bat_volt * 1000.0f);
-            uint32_t ca = (uint32_t)lroundf(s->bat_amp * 100.0f);
-            uint32_t i;
-            for (i = 0u; i < 8u; i++) {
-                rec[i] = (uint8_t)(t >> (8u * i));
-            }
-            rec[8] = (uint8_t)mv;
-            rec[9] = (uint8_t)(mv >> 8);
-            rec[10] = (uint8_t)ca;
-            rec[11] = (uint8_t)(ca >> 8);
-            veh_log_record(v, VEH_LOG_BATT, rec, 12u);
-        }
+        battery_take(v, &m);
+    }
+    /* battery health: readings arrive at 3 Hz */
+    if (s->armed && s->bat_ok && ((veh_now(v) - s->bat_last_us) > 1000000u) &&
+        !s->bat_stale_said) {
+        s->bat_stale_said = true;
+        veh_say(v, "vehicle: battery readings stopped");
     }
     /* GPS health: fixes arrive at 5 Hz */
     if (s->armed && s->pos_ok && ((veh_now(v) - s->gps_last_us) > 1000000u)) {

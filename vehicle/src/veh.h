@@ -113,6 +113,12 @@ void veh_loop_once(mt_sample_wait_fn_t wait, void *ctx);
 mt_proc_set_t *veh_timer_procs(void);
 mt_proc_set_t *veh_io_procs(void);
 
+/** The vehicle's work queue (the battery monitor, 3 Hz): serve it from one
+ *  thread (mt_wq_thread_body, e.g. mt_posix_wq_start / mt_chibios_wq_start)
+ *  or, without threads, with mt_wq_run_pending() in the main loop's idle
+ *  time. Its interval timer is one of the vehicle's timer procs. */
+mt_wq_t *veh_work_queue(void);
+
 /** Timer-proc period and cost range from tasks.def (for the deployment). */
 void veh_timer_spec(uint32_t *period_us, uint32_t *cost_min_us, uint32_t *cost_max_us);
 

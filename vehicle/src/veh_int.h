@@ -13,8 +13,10 @@
  *   posctl.c    nav_update: flight modes, navigation targets, position controller
  *   auto.c      mission_update and the mission callbacks (AUTO mode)
  *   logger.c    log_write and the log writer (IO proc)
- *   house.c     housekeeping (battery over the shared bus), status_line
- *   bus.c       the shared sensor bus (binary semaphore)
+ *   battery.c   the battery monitor: a work item (3 Hz, work queue) reads it over the
+ *               shared bus and publishes the readings on the `battery` topic
+ *   house.c     housekeeping (battery readings from the topic, health), status_line
+ *   sensor_bus.c the shared sensor bus (binary semaphore)
  * vehicle.c is the topology: it owns the state below and the task table.
  */
 #ifndef VEH_INT_H
@@ -167,8 +169,20 @@ typedef struct {
     float bat_amp;
     bool bat_ok;
     bool bat_low_said;
+    bool bat_stale_said;
+    uint64_t bat_last_us; /**< time of the newest reading taken */
     uint32_t status_runs;
 } veh_state_t;
+
+/** Battery readings on the `battery` topic (battery.c -> house.c). */
+#define VEH_BATTERY_PERIOD_US 333333u /* 3 Hz, as the housekeeping loop */
+#define VEH_BATTERY_QUEUE 2u          /* two readings retained: a late housekeeping run
+                                         still gets both; more are counted as missed */
+typedef struct {
+    uint64_t t_us; /**< time of the read */
+    uint32_t mv;   /**< millivolts */
+    uint32_t ca;   /**< centiamperes */
+} veh_battery_msg_t;
 
 typedef struct {
     const veh_platform_t *plat;
@@ -187,6 +201,13 @@ typedef struct {
     mt_sched_t sched;
     mt_proc_set_t timer_procs;
     mt_proc_set_t io_procs;
+    /* battery monitor: a work item on the vehicle's work queue, readings on a topic */
+    mt_wq_t wq;
+    mt_work_t battery_work;
+    mt_topic_t battery_topic;
+    veh_battery_msg_t battery_store[VEH_BATTERY_QUEUE];
+    mt_sub_t battery_sub;      /**< housekeeping's subscription (main loop) */
+    uint32_t battery_read_fail; /**< work item: bus reads that failed (queue thread) */
     veh_counters_t c;
     uint64_t boot_us;
 } veh_t;
@@ -210,6 +231,9 @@ void veh_status_line(veh_t *v);
 /* procs */
 void veh_baro_timer_proc(void *arg); /**< timer thread, 1 kHz */
 void veh_log_io_proc(void *arg);     /**< IO thread */
+
+/* battery monitor (battery.c): topic, subscription, work queue and interval item */
+mt_status_t veh_battery_init(veh_t *v);
 
 /* AUTO mode (auto.c) */
 void veh_auto_init(veh_t *v);

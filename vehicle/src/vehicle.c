@@ -220,6 +220,35 @@ void veh_say(veh_t *v, const char *fmt, ...)
 
 /* ---- set-up and loop ----------------------------------------------------------------------- */
 
+/* The work queue and the battery topic (the summary's last lines). */
+static void veh_summary_battery(veh_t *v)
+{
+    mt_wq_report_t q;
+    mt_work_report_t w;
+    char a[24];
+    char b[24];
+    char c[24];
+
+    mt_wq_report(&v->wq, &q);
+    mt_work_report(&v->battery_work, &w);
+    veh_printf("work queue %s: %llu runs, %u merged, %u periods missed, deepest %u, max "
+               "latency %u us\n",
+               q.name, (unsigned long long)q.runs, (unsigned)q.merged, (unsigned)q.missed,
+               (unsigned)q.max_depth, (unsigned)q.max_latency_us);
+    veh_printf("battery item: %llu runs, run mean %u us max %u us, interval %s ms (min %s, max "
+               "%s), %u failed reads\n",
+               (unsigned long long)w.runs, (unsigned)w.mean_run_us, (unsigned)w.max_run_us,
+               vp_fix(a, sizeof(a), (int64_t)w.mean_interval_us, 1000, 1u),
+               vp_fix(b, sizeof(b), (int64_t)w.min_interval_us, 1000, 1u),
+               vp_fix(c, sizeof(c), (int64_t)w.max_interval_us, 1000, 1u),
+               (unsigned)v->battery_read_fail);
+    veh_printf("topic battery: %u published, %u refused; housekeeping: %u received, %u missed, "
+               "%u torn\n",
+               (unsigned)v->battery_topic.publishes, (unsigned)v->battery_topic.rejected,
+               (unsigned)v->battery_sub.received, (unsigned)v->battery_sub.missed,
+               (unsigned)v->battery_sub.torn);
+}
+
 mt_status_t veh_init(const veh_platform_t *plat, const veh_home_t *home,
                      const mt_mission_cmd_t *cmds, uint16_t n, uint32_t *bad)
 {
@@ -244,8 +273,13 @@ mt_status_t veh_init(const veh_platform_t *plat, const veh_home_t *home,
         return st;
     }
     if ((mt_proc_register(&v->timer_procs, veh_baro_timer_proc, v) != MT_OK) ||
+        (mt_proc_register(&v->timer_procs, mt_wq_timer_proc, &v->wq) != MT_OK) ||
         (mt_proc_register(&v->io_procs, veh_log_io_proc, v) != MT_OK)) {
         return MT_E_FULL;
+    }
+    st = veh_battery_init(v);
+    if (st != MT_OK) {
+        return st;
     }
     v->mission_st = MT_E_EMPTY;
     if ((cmds != NULL) && (n > 0u)) {
@@ -277,6 +311,11 @@ mt_proc_set_t *veh_timer_procs(void)
 mt_proc_set_t *veh_io_procs(void)
 {
     return &g_veh.io_procs;
+}
+
+mt_wq_t *veh_work_queue(void)
+{
+    return &g_veh.wq;
 }
 
 void veh_timer_spec(uint32_t *period_us, uint32_t *cost_min_us, uint32_t *cost_max_us)
@@ -463,4 +502,5 @@ void veh_summary(const char *stop_reason)
                (unsigned long long)v->io_procs.dispatches);
     veh_printf("telemetry: %llu packets, %llu bytes\n", (unsigned long long)c->telem_packets,
                (unsigned long long)c->telem_bytes);
+    veh_summary_battery(v);
 }

@@ -77,6 +77,8 @@ static mt_chibios_proc_thread_t timer_thread;
 static mt_chibios_proc_thread_t io_thread;
 static uint8_t timer_stack[2048] __attribute__((aligned(8)));
 static uint8_t io_stack[1024] __attribute__((aligned(8)));
+static mt_chibios_wq_thread_t wq_thread; /* the vehicle's work queue (battery monitor) */
+static uint8_t wq_stack[1024] __attribute__((aligned(8)));
 
 static void uart_write(const uint8_t *s, uint32_t n)
 {
@@ -267,8 +269,10 @@ int main(void)
                                       timer_stack, (uint32_t)sizeof(timer_stack),
                                       MT_PRIO_TIMER) != MT_OK) ||
         (mt_chibios_proc_thread_start(&io_thread, "io", veh_io_procs(), IO_PERIOD_US, io_stack,
-                                      (uint32_t)sizeof(io_stack), MT_PRIO_IO) != MT_OK)) {
-        veh_printf("proc threads could not start\n");
+                                      (uint32_t)sizeof(io_stack), MT_PRIO_IO) != MT_OK) ||
+        (mt_chibios_wq_start(&wq_thread, veh_work_queue(), wq_stack,
+                             (uint32_t)sizeof(wq_stack)) != MT_OK)) {
+        veh_printf("proc and work-queue threads could not start\n");
         fw_exit(FW_EXIT_FAILURE);
     }
 
@@ -306,7 +310,8 @@ int main(void)
     check(mt_chibios_proc_thread_stop(&timer_thread, STOP_TIMEOUT_US) == MT_OK,
           "timer thread stopped");
     check(mt_chibios_proc_thread_stop(&io_thread, STOP_TIMEOUT_US) == MT_OK, "io thread stopped");
-    /* both threads have exited: main is now the only consumer of the log and the console */
+    check(mt_chibios_wq_stop(&wq_thread, STOP_TIMEOUT_US) == MT_OK, "work-queue thread stopped");
+    /* the threads have exited: main is now the only consumer of the log and the console */
     (void)mt_proc_dispatch(veh_io_procs());
     (void)mt_proc_dispatch(veh_io_procs());
     console_direct = true;

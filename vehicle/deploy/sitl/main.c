@@ -6,7 +6,7 @@
  *   metronome-sitl [options] [MISSION.waypoints]
  *     --builtin          fly the firmware's built-in mission instead of a file
  *     --realtime         wall-clock time on real threads (timer thread 1 kHz, IO
- *                        thread, main loop on the port's metronome)
+ *                        thread, work-queue thread, main loop on the port's metronome)
  *     --seed N           noise and task-cost seed (default 1)
  *     --timeout S        give up after S seconds (default 600)
  *     --ticks N          stop after N scheduler ticks (schedulability runs)
@@ -26,7 +26,8 @@
  * simulated cost (a pseudo-random time in the range of tasks.def, mostly near its low
  * end), when the timer procs run (1 kHz, pre-empting the
  * task that is running: their cost extends its wall time) or when the loop
- * waits for the next sample (idle: timer and IO procs run there). Runs are
+ * waits for the next sample (idle: timer and IO procs and the work queue's pending items,
+ * the battery monitor, run there). Runs are
  * deterministic and faster than real time.
  *
  * Exit status: 0 mission complete (or --ticks reached), 1 not complete
@@ -238,6 +239,7 @@ static uint64_t sim_wait(void *ctx)
     while (s->next_timer < next) {
         sim_set_at_least(s->next_timer);
         (void)mt_proc_dispatch(veh_io_procs());
+        (void)mt_wq_run_pending(veh_work_queue(), MT_CFG_WQ_MAX_ITEMS);
         timer_round(s);
     }
     sim_set_at_least(next);
@@ -493,6 +495,7 @@ int main(int argc, char **argv)
     mt_status_t st;
     mt_posix_proc_thread_t timer_thr;
     mt_posix_proc_thread_t io_thr;
+    mt_posix_wq_thread_t wq_thr;
     const char *reason;
     double w0;
     int rc;
@@ -639,8 +642,9 @@ int main(int argc, char **argv)
         mt_posix_metronome_init(&g.met, g.period_us);
         if ((mt_posix_proc_thread_start(&timer_thr, veh_timer_procs(), g.timer_period,
                                         MT_PRIO_TIMER) != MT_OK) ||
-            (mt_posix_proc_thread_start(&io_thr, veh_io_procs(), 1000u, MT_PRIO_IO) != MT_OK)) {
-            fprintf(stderr, "sitl: cannot start the proc threads\n");
+            (mt_posix_proc_thread_start(&io_thr, veh_io_procs(), 1000u, MT_PRIO_IO) != MT_OK) ||
+            (mt_posix_wq_start(&wq_thr, veh_work_queue()) != MT_OK)) {
+            fprintf(stderr, "sitl: cannot start the proc and work-queue threads\n");
             return 2;
         }
     }
@@ -692,6 +696,7 @@ int main(int argc, char **argv)
     if (!g.sim) {
         mt_posix_proc_thread_stop(&timer_thr);
         mt_posix_proc_thread_stop(&io_thr);
+        mt_posix_wq_stop(&wq_thr);
     }
     /* drain what is left of the log (the IO thread is stopped: this is its consumer now) */
     (void)mt_proc_dispatch(veh_io_procs());

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /**
- * @file bus.c
+ * @file sensor_bus.c
  * @brief The shared sensor bus: the barometer driver (timer thread) and the
- *        battery monitor (housekeeping, main loop) use one bus; a binary
+ *        battery monitor (a work item, work-queue thread) use one bus; a binary
  *        semaphore (mt/sem.h) initialised free is its lock, so transactions
  *        never overlap (the simulated bus counts overlaps as collisions).
  */
