@@ -36,7 +36,13 @@ endif
 WP_PAR       := 2
 WP_JOBS      := 2
 WP_PROVERS   ?= z3-fixedto,cvc4
+# The WP result cache: `update` replays recorded verdicts of byte-identical prover tasks and
+# records new ones. Each module's session is seeded from the committed bundle
+# proofs/wp/cache/<m>.json (proofs/wp/cache.py), so a clean clone (CI) re-runs provers only on
+# changed goals; WP_CACHE=none runs every prover (and ignores the bundles). The report counts
+# replayed and fresh results (assumption W4). `make wp-cache-save` refreshes the bundles.
 WP_CACHE     ?= update
+WP_CACHE_DIR := proofs/wp/cache
 WP_INC       := -Ikernel/include -Ikernel/port -Ikernel/spec -Ikernel/src
 # Sources per module: kernel/src/<m>.c, or every file of proofs/wp/laws/ for `laws`.
 WP_SRC_laws  := $(wildcard proofs/wp/laws/*.c)
@@ -61,6 +67,7 @@ WP_FLAGS = -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast \
            -wp-cache $(WP_CACHE) -cpp-extra-args="$(WP_INC)" $(if $(WP_FCT),-wp-fct $(WP_FCT))
 
 .PHONY: prove prove-selftest deps-prove wp wp-all wp-gate wp-canary wp-clean wp-diversity wp-conf \
+        wp-cache-save \
         $(addprefix wp-,$(WP_MODULES))
 
 deps-prove:
@@ -87,15 +94,18 @@ wp-conf: $(WP_WHY3CONF)
 # re-proves from the cache.
 $(addprefix wp-,$(WP_MODULES)): wp-%: $(WP_WHY3CONF)
 	@mkdir -p $(WP_DIR)/$*
+	@$(if $(filter none,$(WP_CACHE)),true,python3 proofs/wp/cache.py seed $(WP_CACHE_DIR)/$*.json \
+	    $(WP_DIR)/$*/session/cache >/dev/null)
 	@start=$$(date +%s.%N); \
 	WHY3CONFIG=$(WP_WHY3CONF) frama-c $(WP_FLAGS) -wp-model $(call wp_model,$*) \
 	    -wp-session $(WP_DIR)/$*/session -wp-report-json $(WP_DIR)/$*/report.json \
 	    $(call wp_src,$*) >$(WP_DIR)/$*/wp.log 2>&1; rc=$$?; \
 	end=$$(date +%s.%N); \
 	awk -v a=$$start -v b=$$end 'BEGIN { printf "%.1f\n", b - a }' >$(WP_DIR)/$*/time.txt; \
-	printf 'wp %-8s %s (%ss)\n' "$*" \
+	printf 'wp %-8s %s (%ss; %s)\n' "$*" \
 	    "$$(grep -m1 'Proved goals' $(WP_DIR)/$*/wp.log | sed 's/.*Proved goals: *//')" \
-	    "$$(cut -d. -f1 $(WP_DIR)/$*/time.txt)"; \
+	    "$$(cut -d. -f1 $(WP_DIR)/$*/time.txt)" \
+	    "$$(python3 proofs/wp/cache.py count $(WP_DIR)/$*/wp.log)"; \
 	exit $$rc
 
 wp-all: $(addprefix wp-,$(WP_MODULES))
@@ -114,6 +124,14 @@ wp-canary: $(WP_WHY3CONF)
 	@python3 proofs/wp/canary/check.py $(WP_DIR)/canary/wp.log | tee $(WP_DIR)/canary/result.txt | tail -n 1
 	@grep -q '^wp-canary: [0-9]* functions as expected' $(WP_DIR)/canary/result.txt || \
 	    { cat $(WP_DIR)/canary/result.txt; exit 1; }
+
+# Refresh the committed cache bundles: every module in cleanup mode (replays what is cached,
+# runs provers on the rest, drops entries no goal of this run uses), then one bundle per module.
+wp-cache-save: $(WP_WHY3CONF)
+	@$(MAKE) --no-print-directory -j$(WP_JOBS) wp-all WP_CACHE=cleanup
+	@for m in $(WP_MODULES); do \
+	    python3 proofs/wp/cache.py save $(WP_DIR)/$$m/session/cache $(WP_CACHE_DIR)/$$m.json; \
+	done
 
 wp-gate:
 	@python3 proofs/wp/gate.py --wp-dir $(WP_DIR) --modules $(call wp_list,$(WP_MODULES))

@@ -97,6 +97,7 @@ def main():
             "goals": wp.get("goals", 0), "proved": wp.get("proved", 0),
             "smoke": wp.get("smoke", 0), "smoke_passed": wp.get("smoke_passed", 0),
             "by_prover": wp.get("by_prover", {}), "modules": sorted(wp.get("modules", {})),
+            "cache_replayed": wp.get("cache_replayed", 0), "cache_fresh": wp.get("cache_fresh", 0),
         }
         if wp.get("proved", 0) != wp.get("goals", 0) or wp.get("goals", 0) == 0:
             problems.append(f"WP: {wp.get('proved', 0)}/{wp.get('goals', 0)} goals proved")
@@ -244,6 +245,9 @@ def main():
         w = summary["wp"]
         md.append(f"- Frama-C WP (RTE, unsigned overflow/downcast, smoke tests): {w['proved']}/{w['goals']} goals, "
                   f"{w['smoke_passed']}/{w['smoke']} smoke tests; by prover: {json.dumps(w['by_prover'], sort_keys=True)}")
+        md.append(f"- WP prover results: {w['cache_fresh']} from provers run in this run, {w['cache_replayed']} "
+                  "replayed from the WP cache (verdicts of byte-identical prover tasks recorded in "
+                  "proofs/wp/cache; assumption W4; `make prove WP_CACHE=none` runs every prover)")
     if summary["cbmc"]:
         c = summary["cbmc"]
         md.append(f"- CBMC: {c['passed']}/{c['harnesses']} harnesses, lowest coverage {c['min_coverage']:.0f}%")

@@ -25,6 +25,8 @@ import re
 import sys
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cache as wp_cache  # noqa: E402  (proofs/wp/cache.py)
 
 # Log lines that fail the gate: (regex, why).
 FATAL_LOG = [
@@ -125,6 +127,7 @@ def module_stats(module, wp_dir):
            "goals": 0, "proved": 0, "smoke": 0, "smoke_passed": 0, "by_prover": {},
            "time_s": None, "prover_time_s": 0.0, "failures": [], "fatal": [], "info": []}
     times, lines = parse_log(os.path.join(d, "wp.log"))
+    res["cache_replayed"], res["cache_fresh"] = wp_cache.count(os.path.join(d, "wp.log"))
     res["fatal"], res["info"] = log_findings(module, lines)
     tfile = os.path.join(d, "time.txt")
     if os.path.exists(tfile):
@@ -250,6 +253,11 @@ def gate(args):
                f"{tot['smoke_passed']:>4}/{tot['smoke']:<4}")
     out.append("proved by (WP counts, smoke tests included): " +
                ", ".join(f"{p} {v}" for p, v in sorted(by_prover.items())))
+    replayed = sum(s.get("cache_replayed") or 0 for s in stats)
+    fresh = sum(s.get("cache_fresh") or 0 for s in stats)
+    out.append(f"prover results (goals and smoke tests): {fresh} from provers run now, {replayed} "
+               "replayed from the WP cache (verdicts recorded for byte-identical prover tasks; "
+               "proofs/wp/cache, assumption W4; WP_CACHE=none runs every prover)")
     problems = []
     for s in stats:
         problems += [f"{s['module']}: unproved: {x}" for x in s["failures"]]
@@ -282,11 +290,13 @@ def gate(args):
     summary = {
         "modules": {s["module"]: {k: s[k] for k in ("goals", "proved", "smoke", "smoke_passed",
                                                     "time_s", "prover_time_s", "by_prover",
+                                                    "cache_replayed", "cache_fresh",
                                                     "functions", "failures", "fatal")}
                     for s in stats},
         "goals": tot["goals"], "proved": tot["proved"],
         "smoke": tot["smoke"], "smoke_passed": tot["smoke_passed"],
         "by_prover": by_prover,
+        "cache_replayed": replayed, "cache_fresh": fresh,
         "acsl_forbidden": acsl,
         "smoke_canary": canary,
         "pass": ok,
