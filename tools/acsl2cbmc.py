@@ -2447,7 +2447,7 @@ def gen_contract(prog, tr, fc, kinds):
 
 
 MTC_MAX_OBJS = 6
-STUB_PREFIXES = ("mt_port_", "mt_invoke", "mt_mission_invoke")
+STUB_PREFIXES = ("mt_port_", "mt_invoke", "mt_mission_invoke", "mt_bus_invoke", "mt_seq_recheck")
 STUB_SKIP = ("mt_port_halt",)   # hand-written: reaching it is an error (assert(0))
 
 

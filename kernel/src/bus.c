@@ -18,6 +18,7 @@
 static uint32_t gen_dist(uint32_t a, uint32_t b)
 {
     /* a < b: the distance crosses the wrap, a + 2^32 - b, computed without leaving 32 bits */
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return (a >= b) ? (a - b) : (((0xFFFFFFFFu - b) + a) + 1u);
 }
 
@@ -26,6 +27,7 @@ static uint32_t gen_dist(uint32_t a, uint32_t b)
 */
 static uint32_t gen_next(uint32_t g)
 {
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return (g < 0xFFFFFFFFu) ? (g + 1u) : 0u;
 }
 
@@ -34,6 +36,7 @@ static uint32_t gen_next(uint32_t g)
 */
 static uint32_t gen_back(uint32_t g, uint32_t d)
 {
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return (g >= d) ? (g - d) : (((0xFFFFFFFFu - d) + g) + 1u);
 }
 
@@ -44,6 +47,7 @@ static uint32_t gen_back(uint32_t g, uint32_t d)
 */
 static uint32_t slot_next(uint32_t h, uint32_t q)
 {
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return ((h + 1u) < q) ? (h + 1u) : 0u;
 }
 
@@ -55,6 +59,7 @@ static uint32_t slot_next(uint32_t h, uint32_t q)
 */
 static uint32_t slot_back(uint32_t h, uint32_t d, uint32_t q)
 {
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return (h >= d) ? (h - d) : ((h + q) - d);
 }
 
@@ -64,6 +69,7 @@ static uint32_t slot_back(uint32_t h, uint32_t d, uint32_t q)
 */
 static uint32_t next_dist(uint32_t p, uint32_t q)
 {
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return (p > q) ? (q - 1u) : (p - 1u);
 }
 
@@ -72,6 +78,7 @@ static uint32_t next_dist(uint32_t p, uint32_t q)
 */
 static uint32_t sat_inc(uint32_t x)
 {
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return (x < 0xFFFFFFFFu) ? (x + 1u) : x;
 }
 
@@ -80,6 +87,7 @@ static uint32_t sat_inc(uint32_t x)
 */
 static uint32_t sat_add(uint32_t x, uint32_t k)
 {
+    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
     return (k <= (0xFFFFFFFFu - x)) ? (x + k) : 0xFFFFFFFFu;
 }
 
@@ -101,9 +109,7 @@ static uint64_t clamp_next(uint64_t last, uint32_t iv, uint64_t now)
 {
     uint64_t r;
 
-    if (now <= iv) {
-        r = now;
-    } else if (last > (now - iv)) {
+    if ((now <= iv) || (last > (now - iv))) {
         r = now;
     } else if ((last + iv) < (now - iv)) {
         r = now - iv;
@@ -220,6 +226,7 @@ static mt_status_t check_desc(const mt_topic_desc_t *d, const void *storage,
 {
     mt_status_t st = MT_OK;
 
+    // cppcheck-suppress misra-c2012-11.4 ; D-104 null pointer constant of the pointer's type
     if ((d->name == (const char *)0) || ((d->flags != 0u) && (d->flags != MT_TOPIC_RELIABLE))) {
         st = MT_E_INVALID;
     } else if ((d->msg_size < 1u) || (d->msg_size > MT_CFG_BUS_MAX_MSG)) {
@@ -565,6 +572,7 @@ static void add_notifier(mt_topic_t *t, mt_bus_notify_fn_t fn, void *arg, uint32
 {
     uint32_t n = t->nnotify;
 
+    // cppcheck-suppress misra-c2012-11.1 ; D-105 no conversion: same function-pointer type
     t->notify_fn[n] = fn;
     t->notify_arg[n] = arg;
     t->notify_min_updates[n] = min_updates;

@@ -3,7 +3,7 @@
  * @file mt_bus_invoke.h
  * @brief The topic bus's indirect calls (kernel-private), in the style of mt_invoke.h.
  *
- * Proof assumption A1 (bus): a notifier returns with the kernel lock still held and
+ * Proof assumption A2: a notifier returns with the kernel lock still held and
  * writes neither the topic that calls it nor the kernel lock state; it must not publish
  * (to any topic: the lock is held). It may signal a semaphore or schedule work. The
  * bodies (bus_invoke.c) are the plain call and the poll wake-up, excluded from WP; CBMC

@@ -164,3 +164,27 @@ mt_work_t *mtc_work(mt_wq_t *q)
     w->arg = (void *)0;
     return w;
 }
+
+mt_topic_t *mtc_topic(void)
+{
+    mt_topic_t *t = MTC_NEW(mt_topic_t, 1u);
+    uint32_t i;
+
+    __CPROVER_assume(t->size >= 1u && t->size <= MT_CFG_BUS_MAX_MSG);
+    __CPROVER_assume(t->qlen >= 1u && t->qlen <= MT_CFG_BUS_MAX_QUEUE);
+    t->buf = (uint8_t *)mtc_alloc(1u, (__CPROVER_size_t)t->size * t->qlen, MTC_K_BYTES);
+    for (i = 0u; i < MT_CFG_BUS_MAX_NOTIFY; i++) {
+        t->notify_fn[i] = mtc_nondet_bool() ? (mt_bus_notify_fn_t)0
+                                            : (mt_bus_notify_fn_t)mtc_callback();
+        t->notify_arg[i] = mtc_nondet_bool() ? (void *)0 : (void *)&mtc_thread;
+    }
+    return t;
+}
+
+mt_sub_t *mtc_sub(mt_topic_t *t)
+{
+    mt_sub_t *s = MTC_NEW(mt_sub_t, 1u);
+    s->topic = t;
+    s->sem.waiter = mtc_nondet_bool() ? (mt_port_tref_t)0 : (mt_port_tref_t)&mtc_thread;
+    return s;
+}

@@ -106,4 +106,14 @@ mt_mission_t *mtc_mission(void);
 /* A candidate command list of n commands, every field nondeterministic. */
 mt_mission_cmd_t *mtc_mission_cmds(uint32_t n);
 
+/* A topic (topic bus, built with BUS_CBMC_CFG: messages of 1..2 bytes, queues of 1..4, 2
+ * notifiers, 2 reliable subscribers, 2 copy attempts; assumption B1) over its own storage of
+ * size * qlen bytes; every other field nondeterministic (generations, stamps, counters up to
+ * their maxima; notifier callbacks NULL or a callback stand-in). */
+mt_topic_t *mtc_topic(void);
+
+/* A subscriber of t: every field nondeterministic (the requires selects the legal ones), its
+ * semaphore's waiter NULL or a parked thread. */
+mt_sub_t *mtc_sub(mt_topic_t *t);
+
 #endif /* MTC_OBJECTS_H */
