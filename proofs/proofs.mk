@@ -126,9 +126,14 @@ wp-canary: $(WP_WHY3CONF)
 	    { cat $(WP_DIR)/canary/result.txt; exit 1; }
 
 # Refresh the committed cache bundles: every module in cleanup mode (replays what is cached,
-# runs provers on the rest, drops entries no goal of this run uses), then one bundle per module.
+# runs provers on the rest, drops entries no goal of this run uses), the canary and the gate;
+# only a run that passes the gate is saved (a goal that timed out on a loaded machine must not
+# be recorded), one bundle per module.
 wp-cache-save: $(WP_WHY3CONF)
 	@$(MAKE) --no-print-directory -j$(WP_JOBS) wp-all WP_CACHE=cleanup
+	@$(MAKE) --no-print-directory wp-canary
+	@$(MAKE) --no-print-directory wp-gate >$(WP_DIR)/gate.txt || \
+	    { tail -n 30 $(WP_DIR)/gate.txt; echo "wp-cache-save: the gate failed, bundles not written"; exit 1; }
 	@for m in $(WP_MODULES); do \
 	    python3 proofs/wp/cache.py save $(WP_DIR)/$$m/session/cache $(WP_CACHE_DIR)/$$m.json; \
 	done

@@ -84,9 +84,20 @@ def main():
         wp_dir = os.path.join(BUILD, "proof", "wp")
         run(["make", "--no-print-directory", f"wp-{m['wp_module']}", f"WP_FCT={m['function']}",
              "WP_CACHE=none"], work, os.path.join(work, "wp.log"))
-        wp_rc = run(["python3", "proofs/wp/gate.py", "--wp-dir", wp_dir, "--modules", m["wp_module"]],
-                    work, os.path.join(work, "wp-gate.log"))
-        wp_kill = wp_rc != 0
+        # The verdict is the module's goal and smoke-test counts in the gate's summary, not the
+        # gate's exit status: the copied tree has no smoke-canary result (the canary is not a
+        # per-mutant check), so the gate itself always fails there.
+        wp_sum = os.path.join(work, "wp-summary.json")
+        run(["python3", "proofs/wp/gate.py", "--wp-dir", wp_dir, "--modules", m["wp_module"],
+             "--summary", wp_sum], work, os.path.join(work, "wp-gate.log"))
+        wp_kill = False
+        if os.path.exists(wp_sum):
+            with open(wp_sum, encoding="utf-8") as f:
+                mod = json.load(f).get("modules", {}).get(m["wp_module"], {})
+            wp_kill = bool(mod.get("failures")) or mod.get("proved", 0) < mod.get("goals", 0) or \
+                mod.get("smoke_passed", 0) < mod.get("smoke", 0) or bool(mod.get("fatal"))
+            if mod.get("goals", 0) == 0:
+                wp_kill = False  # no report (the mutant did not parse): no WP verdict
         if m["function"] in open_fns:
             wp_kill = None  # inconclusive: the function has open goals without the mutation
         harness = m.get("harness", m["function"])
