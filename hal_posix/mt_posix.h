@@ -40,8 +40,8 @@ void mt_posix_sim_advance(uint64_t us);
 /** Paces the main loop: one sample every period_us on absolute deadlines. */
 typedef struct {
     uint32_t period_us;
-    uint64_t next_us;   /**< next sample time (0: not started) */
-    uint64_t samples;   /**< samples delivered */
+    uint64_t next_us; /**< next sample time (0: not started) */
+    uint64_t samples; /**< samples delivered */
 } mt_posix_metronome_t;
 
 void mt_posix_metronome_init(mt_posix_metronome_t *m, uint32_t period_us);
@@ -52,8 +52,8 @@ uint64_t mt_posix_metronome_wait(void *metronome);
 typedef struct {
     mt_proc_set_t *set;
     uint32_t period_us;
-    volatile int stop;      /**< set by mt_posix_proc_thread_stop */
-    void *impl;             /**< pthread handle storage */
+    volatile int stop; /**< set by mt_posix_proc_thread_stop */
+    void *impl;        /**< pthread handle storage */
 } mt_posix_proc_thread_t;
 
 /** Start the dispatching thread (timer: MT_PRIO_TIMER, 1000 us; IO: MT_PRIO_IO). */
@@ -67,7 +67,7 @@ void mt_posix_proc_thread_stop(mt_posix_proc_thread_t *t);
  *  queue from the test with mt_wq_run_pending(). */
 typedef struct {
     mt_wq_t *wq;
-    void *impl;             /**< pthread handle storage */
+    void *impl; /**< pthread handle storage */
 } mt_posix_wq_thread_t;
 
 /** Start the queue's thread.

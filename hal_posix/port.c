@@ -53,8 +53,8 @@ void mt_posix_sim_advance(uint64_t us)
     uint64_t n;
     do {
         n = (t <= UINT64_MAX - us) ? t + us : UINT64_MAX;
-    } while (!__atomic_compare_exchange_n(&g_sim_now, &t, n, false, __ATOMIC_ACQ_REL,
-                                          __ATOMIC_ACQUIRE));
+    } while (
+        !__atomic_compare_exchange_n(&g_sim_now, &t, n, false, __ATOMIC_ACQ_REL, __ATOMIC_ACQUIRE));
 }
 
 static void sim_set_at_least(uint64_t target)
@@ -141,9 +141,9 @@ int32_t mt_port_suspend_s(mt_port_tref_t *ref, uint64_t timeout_us)
     }
     waiter_prepare(me);
     *ref = me;
-    deadline = (timeout_us == MT_WAIT_FOREVER) ? UINT64_MAX
+    deadline = (timeout_us == MT_WAIT_FOREVER)              ? UINT64_MAX
                : (real_now_us() <= UINT64_MAX - timeout_us) ? real_now_us() + timeout_us
-                                                           : UINT64_MAX;
+                                                            : UINT64_MAX;
     while (me->resumed == 0) {
         uint64_t now = real_now_us();
         uint64_t chunk;

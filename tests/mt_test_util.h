@@ -23,7 +23,8 @@ extern "C" {
 #include "mt_posix.h"
 }
 
-namespace mt_test {
+namespace mt_test
+{
 
 #if defined(__SANITIZE_THREAD__)
 constexpr bool kTsan = true;
@@ -42,16 +43,27 @@ constexpr bool kTsan = false;
 constexpr uint64_t kSimStartUs = 1000000u;
 
 /** Fixture: simulated time for the duration of one test. */
-class SimTime : public ::testing::Test {
-protected:
-    void SetUp() override { mt_posix_sim_enable(kSimStartUs); }
-    void TearDown() override { mt_posix_sim_disable(); }
+class SimTime : public ::testing::Test
+{
+  protected:
+    void SetUp() override
+    {
+        mt_posix_sim_enable(kSimStartUs);
+    }
+    void TearDown() override
+    {
+        mt_posix_sim_disable();
+    }
 };
 
 /** Fixture: real time (undoes a simulated test that failed half-way). */
-class RealTime : public ::testing::Test {
-protected:
-    void SetUp() override { mt_posix_sim_disable(); }
+class RealTime : public ::testing::Test
+{
+  protected:
+    void SetUp() override
+    {
+        mt_posix_sim_disable();
+    }
 };
 
 /** Poll pred until it holds or limit passes; true when it held. */
@@ -87,9 +99,12 @@ inline mt_sem_t sem_snapshot(mt_sem_t *s)
 }
 
 /** xorshift64*: small, deterministic, seedable. */
-class Rng {
-public:
-    explicit Rng(uint64_t seed) : x_(seed != 0u ? seed : 0x9E3779B97F4A7C15ull) {}
+class Rng
+{
+  public:
+    explicit Rng(uint64_t seed) : x_(seed != 0u ? seed : 0x9E3779B97F4A7C15ull)
+    {
+    }
     uint64_t next()
     {
         x_ ^= x_ >> 12;
@@ -98,14 +113,20 @@ public:
         return x_ * 2685821657736338717ull;
     }
     /** Uniform in [0, n) (n >= 1). */
-    uint32_t below(uint32_t n) { return static_cast<uint32_t>(next() % n); }
+    uint32_t below(uint32_t n)
+    {
+        return static_cast<uint32_t>(next() % n);
+    }
     /** Uniform in [lo, hi]. */
-    uint32_t range(uint32_t lo, uint32_t hi) { return lo + below(hi - lo + 1u); }
+    uint32_t range(uint32_t lo, uint32_t hi)
+    {
+        return lo + below(hi - lo + 1u);
+    }
 
-private:
+  private:
     uint64_t x_;
 };
 
-}  // namespace mt_test
+} // namespace mt_test
 
-#endif  // MT_TEST_UTIL_H
+#endif // MT_TEST_UTIL_H

@@ -11,7 +11,8 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::RealTime;
 using mt_test::Rng;
@@ -70,7 +71,7 @@ struct Topic {
 uint32_t pending(const mt_sub_t &s)
 {
     const uint32_t g = s.topic->gen;
-    return g - s.gen;  // test-side modular arithmetic (the kernel splits cases instead)
+    return g - s.gen; // test-side modular arithmetic (the kernel splits cases instead)
 }
 
 // ---------------------------------------------------------------------------------- init
@@ -189,7 +190,7 @@ TEST(Bus, QueueLengthOneKeepsTheNewest)
 
     ASSERT_EQ(tp.pub(7u), MT_OK);
     EXPECT_TRUE(mt_sub_updated(&s, 0u));
-    EXPECT_TRUE(mt_sub_updated(&s, 0u));  // pure: asking twice changes nothing
+    EXPECT_TRUE(mt_sub_updated(&s, 0u)); // pure: asking twice changes nothing
     EXPECT_EQ(mt_sub_copy_next(&s, &out, sizeof out, 0u), MT_OK);
     EXPECT_EQ(out.seq, 7u);
     EXPECT_TRUE(msg_whole(out));
@@ -201,7 +202,7 @@ TEST(Bus, QueueLengthOneKeepsTheNewest)
     }
     EXPECT_EQ(mt_sub_copy_next(&s, &out, sizeof out, 0u), MT_W_BUS_MISSED);
     EXPECT_EQ(out.seq, 12u);
-    EXPECT_EQ(s.missed, 4u);  // 8..11 were overwritten before the subscriber looked
+    EXPECT_EQ(s.missed, 4u); // 8..11 were overwritten before the subscriber looked
     EXPECT_EQ(s.received, 2u);
     EXPECT_EQ(s.skipped, 0u);
     // copy_latest re-reads the newest message without consuming anything new
@@ -258,7 +259,7 @@ TEST(Bus, CopyLatestSkipsRetainedAndMissesOverwritten)
     ASSERT_EQ(tp.pub(2u), MT_OK);
     EXPECT_EQ(mt_sub_copy_latest(&s, &out, sizeof out, 0u), MT_OK);
     EXPECT_EQ(out.seq, 2u);
-    EXPECT_EQ(s.skipped, 1u);  // message 1 was still retained: skipped, not missed
+    EXPECT_EQ(s.skipped, 1u); // message 1 was still retained: skipped, not missed
     EXPECT_EQ(s.missed, 0u);
     for (uint32_t k = 3u; k <= 9u; ++k) {
         ASSERT_EQ(tp.pub(k), MT_OK);
@@ -294,7 +295,7 @@ TEST(Bus, AccountingIsExactUnderRandomOperations)
 {
     for (uint32_t q : {1u, 2u, 5u}) {
         Topic tp;
-        ASSERT_EQ(tp.init(q, 0u, 0xFFFFFF00u), MT_OK);  // crosses the wrap on the way
+        ASSERT_EQ(tp.init(q, 0u, 0xFFFFFF00u), MT_OK); // crosses the wrap on the way
         mt_sub_t s;
         mt_sub_init(&s, &tp.t, 0u);
         Rng rng(q);
@@ -312,7 +313,7 @@ TEST(Bus, AccountingIsExactUnderRandomOperations)
                     ASSERT_TRUE(msg_whole(out));
                     ASSERT_GT(out.seq, last_seen);
                     if (st == MT_OK) {
-                        ASSERT_EQ(out.seq, last_seen + 1u);  // the next one, nothing lost
+                        ASSERT_EQ(out.seq, last_seen + 1u); // the next one, nothing lost
                     }
                     last_seen = out.seq;
                 }
@@ -347,7 +348,7 @@ TEST(Bus, GenerationWrapsAndDistancesStayExact)
     ASSERT_EQ(tp.pub(1u), MT_OK);
     EXPECT_EQ(tp.t.gen, UINT32_MAX);
     ASSERT_EQ(tp.pub(2u), MT_OK);
-    EXPECT_EQ(tp.t.gen, 0u);  // 0xFFFFFFFF is followed by 0
+    EXPECT_EQ(tp.t.gen, 0u); // 0xFFFFFFFF is followed by 0
     ASSERT_EQ(tp.pub(3u), MT_OK);
     EXPECT_EQ(tp.t.gen, 1u);
     EXPECT_TRUE(mt_sub_updated(&s, 0u));
@@ -398,7 +399,7 @@ TEST(Bus, StampMismatchGivesUpWithTornAndConsumesNothing)
     ASSERT_EQ(tp.pub(1u), MT_OK);
     const uint32_t slot = tp.t.head;
     const uint32_t good = tp.t.stamp[slot];
-    tp.t.stamp[slot] = good + 2u;  // "being overwritten by the message two later"
+    tp.t.stamp[slot] = good + 2u; // "being overwritten by the message two later"
     Msg out{};
     EXPECT_EQ(mt_sub_copy_next(&s, &out, sizeof out, 0u), MT_E_BUS_TORN);
     EXPECT_EQ(mt_sub_copy_latest(&s, &out, sizeof out, 0u), MT_E_BUS_TORN);
@@ -421,26 +422,26 @@ TEST(Bus, IntervalSubscriptionFollowsUorbSemantics)
     mt_sub_init(&s, &tp.t, kIv);
     Msg out{};
     ASSERT_EQ(tp.pub(1u), MT_OK);
-    EXPECT_FALSE(mt_sub_updated(&s, 999u));   // interval not yet elapsed since 0
+    EXPECT_FALSE(mt_sub_updated(&s, 999u)); // interval not yet elapsed since 0
     EXPECT_TRUE(mt_sub_updated(&s, 1000u));
     ASSERT_EQ(mt_sub_copy_next(&s, &out, sizeof out, 1000u), MT_OK);
-    EXPECT_EQ(s.last_us, 1000u);              // now <= interval: last = now
+    EXPECT_EQ(s.last_us, 1000u); // now <= interval: last = now
     ASSERT_EQ(tp.pub(2u), MT_OK);
     EXPECT_FALSE(mt_sub_updated(&s, 1999u));
     EXPECT_TRUE(mt_sub_updated(&s, 2000u));
     ASSERT_EQ(mt_sub_copy_next(&s, &out, sizeof out, 2300u), MT_OK);
-    EXPECT_EQ(s.last_us, 2000u);              // moved by one interval (no drift)
+    EXPECT_EQ(s.last_us, 2000u); // moved by one interval (no drift)
     ASSERT_EQ(tp.pub(3u), MT_OK);
     ASSERT_EQ(mt_sub_copy_next(&s, &out, sizeof out, 9000u), MT_OK);
-    EXPECT_EQ(s.last_us, 8000u);              // clamped to now - interval: no backlog
+    EXPECT_EQ(s.last_us, 8000u); // clamped to now - interval: no backlog
     ASSERT_EQ(tp.pub(4u), MT_OK);
-    EXPECT_TRUE(mt_sub_updated(&s, 9000u));   // one catch-up update is due at once
+    EXPECT_TRUE(mt_sub_updated(&s, 9000u)); // one catch-up update is due at once
     ASSERT_EQ(mt_sub_copy_latest(&s, &out, sizeof out, 9500u), MT_OK);
-    EXPECT_EQ(s.last_us, 9000u);              // last + interval, inside the window
+    EXPECT_EQ(s.last_us, 9000u); // last + interval, inside the window
     ASSERT_EQ(tp.pub(5u), MT_OK);
     EXPECT_FALSE(mt_sub_updated(&s, 9999u));
     ASSERT_EQ(mt_sub_copy_latest(&s, &out, sizeof out, 9600u), MT_OK);
-    EXPECT_EQ(s.last_us, 9600u);              // clamped to now (copied before the interval)
+    EXPECT_EQ(s.last_us, 9600u); // clamped to now (copied before the interval)
     // a time before the last update never opens the gate
     ASSERT_EQ(tp.pub(6u), MT_OK);
     EXPECT_FALSE(mt_sub_updated(&s, 100u));
@@ -477,8 +478,7 @@ TEST(BusNotify, RegistrationStatusesAndBound)
         EXPECT_EQ(mt_topic_notify_add(&tp.t, count_call, &c[k], 1u, 0u), MT_OK);
     }
     EXPECT_EQ(mt_topic_notify_add(&tp.t, count_call, &c[0], 1u, 0u), MT_E_DUPLICATE);
-    EXPECT_EQ(mt_topic_notify_add(&tp.t, other_call, &c[MT_CFG_BUS_MAX_NOTIFY], 1u, 0u),
-              MT_E_FULL);
+    EXPECT_EQ(mt_topic_notify_add(&tp.t, other_call, &c[MT_CFG_BUS_MAX_NOTIFY], 1u, 0u), MT_E_FULL);
     EXPECT_EQ(tp.t.nnotify, MT_CFG_BUS_MAX_NOTIFY);
     ASSERT_EQ(tp.pub(1u), MT_OK);
     for (uint32_t k = 0u; k < MT_CFG_BUS_MAX_NOTIFY; ++k) {
@@ -504,7 +504,7 @@ TEST(BusNotify, CountGateCallsEveryNthPublish)
         EXPECT_EQ(c.calls.load(), static_cast<int>(k / 3u)) << k;
     }
     EXPECT_EQ(tp.t.notify_calls[0], 3u);
-    EXPECT_EQ(tp.t.notify_gated[0], 7u);  // every publish that did not call is counted
+    EXPECT_EQ(tp.t.notify_gated[0], 7u); // every publish that did not call is counted
     EXPECT_EQ(tp.t.notify_calls[0] + tp.t.notify_gated[0], tp.t.publishes);
 }
 
@@ -517,16 +517,16 @@ TEST_F(BusNotifySim, IntervalGateHoldsBackUntilTheIntervalPassed)
     ASSERT_EQ(tp.init(1u), MT_OK);
     Counter c;
     ASSERT_EQ(mt_topic_notify_add(&tp.t, count_call, &c, 1u, kIv), MT_OK);
-    ASSERT_EQ(tp.pub(1u), MT_OK);  // sim time 1 s: long after last_us 0
+    ASSERT_EQ(tp.pub(1u), MT_OK); // sim time 1 s: long after last_us 0
     EXPECT_EQ(c.calls.load(), 1);
     const uint64_t t0 = mt_port_now_us();
-    EXPECT_EQ(tp.t.notify_last_us[0], t0 - kIv);  // clamped to now - interval
+    EXPECT_EQ(tp.t.notify_last_us[0], t0 - kIv); // clamped to now - interval
     mt_posix_sim_advance(1u);
-    ASSERT_EQ(tp.pub(2u), MT_OK);  // the one catch-up call uORB's rule allows
+    ASSERT_EQ(tp.pub(2u), MT_OK); // the one catch-up call uORB's rule allows
     EXPECT_EQ(c.calls.load(), 2);
     EXPECT_EQ(tp.t.notify_last_us[0], t0);
     mt_posix_sim_advance(kIv - 2u);
-    ASSERT_EQ(tp.pub(3u), MT_OK);  // kIv - 1 after the last update: held back
+    ASSERT_EQ(tp.pub(3u), MT_OK); // kIv - 1 after the last update: held back
     EXPECT_EQ(c.calls.load(), 2);
     EXPECT_EQ(tp.t.notify_gated[0], 1u);
     mt_posix_sim_advance(1u);
@@ -583,13 +583,13 @@ TEST(BusReliable, PublishIsRefusedWhileAReliableSubscriberLags)
     ASSERT_EQ(mt_sub_copy_next(&r, &out, sizeof out, 0u), MT_OK);
     EXPECT_EQ(out.seq, 1u);
     EXPECT_EQ(tp.t.rel_gen[0], r.gen);
-    EXPECT_EQ(tp.pub(4u), MT_OK);   // room for exactly one
+    EXPECT_EQ(tp.pub(4u), MT_OK); // room for exactly one
     EXPECT_EQ(tp.pub(5u), MT_E_BUS_BEHIND);
     for (uint32_t k = 2u; k <= 4u; ++k) {
         ASSERT_EQ(mt_sub_copy_next(&r, &out, sizeof out, 0u), MT_OK);
         EXPECT_EQ(out.seq, k);
     }
-    EXPECT_EQ(r.missed, 0u);         // a reliable subscriber never misses
+    EXPECT_EQ(r.missed, 0u); // a reliable subscriber never misses
     EXPECT_EQ(tp.pub(5u), MT_OK);
     // copy_latest moves the reliable mark too
     ASSERT_EQ(tp.pub(6u), MT_OK);
@@ -618,11 +618,11 @@ TEST_F(BusPollSim, StatusesWithoutBlocking)
     EXPECT_EQ(mt_sub_poll_enable(&s), MT_E_DUPLICATE);
     EXPECT_EQ(mt_sub_poll(&s, 0u), MT_E_TIMEOUT);
     const uint64_t t0 = mt_port_now_us();
-    EXPECT_EQ(mt_sub_poll(&s, 5000u), MT_E_TIMEOUT);  // simulated: the timeout elapses
+    EXPECT_EQ(mt_sub_poll(&s, 5000u), MT_E_TIMEOUT); // simulated: the timeout elapses
     EXPECT_EQ(mt_port_now_us(), t0 + 5000u);
     ASSERT_EQ(tp.pub(1u), MT_OK);
-    EXPECT_EQ(s.sem.token, 1u);                       // the publish signalled
-    EXPECT_EQ(mt_sub_poll(&s, 0u), MT_OK);            // pending: no wait
+    EXPECT_EQ(s.sem.token, 1u);            // the publish signalled
+    EXPECT_EQ(mt_sub_poll(&s, 0u), MT_OK); // pending: no wait
     Msg out{};
     ASSERT_EQ(mt_sub_copy_next(&s, &out, sizeof out, 0u), MT_OK);
     // the token left by the consumed publish does not make the next poll succeed
@@ -657,7 +657,7 @@ TEST_F(BusPollReal, WakesOnPublishAndReportsBusyForASecondPoller)
     std::atomic<int> result{-1};
     std::thread waiter([&] { result.store(mt_sub_poll(&s, MT_WAIT_FOREVER)); });
     ASSERT_TRUE(wait_until([&] { return sem_has_waiter(&s.sem); }));
-    EXPECT_EQ(mt_sub_poll(&s, 1000u), MT_E_BUSY);  // one poller per subscriber
+    EXPECT_EQ(mt_sub_poll(&s, 1000u), MT_E_BUSY); // one poller per subscriber
     const Msg m = make_msg(1u);
     ASSERT_EQ(mt_topic_publish_isr(&tp.t, &m, sizeof m), MT_OK);
     waiter.join();
@@ -665,7 +665,7 @@ TEST_F(BusPollReal, WakesOnPublishAndReportsBusyForASecondPoller)
     Msg out{};
     EXPECT_EQ(mt_sub_copy_next(&s, &out, sizeof out, 0u), MT_OK);
     EXPECT_EQ(out.seq, 1u);
-    EXPECT_EQ(mt_sub_poll(&s, 2000u), MT_E_TIMEOUT);  // real time: nothing published
+    EXPECT_EQ(mt_sub_poll(&s, 2000u), MT_E_TIMEOUT); // real time: nothing published
 }
 
 // ------------------------------------------------------------------------ stress
@@ -710,7 +710,7 @@ TEST_F(BusStress, PublishersRaceLockFreeSubscribers)
                 return;
             }
             const uint32_t side = out.seq & 1u;
-            if (out.seq < last[side]) {  // each publisher's messages arrive in order
+            if (out.seq < last[side]) { // each publisher's messages arrive in order
                 bad.fetch_add(1u);
             }
             last[side] = out.seq;
@@ -817,4 +817,4 @@ TEST_F(BusStress, ReliableSubscriberNeverMisses)
     EXPECT_EQ(tp.t.publishes, target);
 }
 
-}  // namespace
+} // namespace

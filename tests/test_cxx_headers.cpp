@@ -12,7 +12,8 @@
 #include <cstdint>
 #include <type_traits>
 
-namespace {
+namespace
+{
 
 // status enum: explicit, distinct values ending in the count sentinel
 static_assert(MT_OK == 0, "MT_OK is 0");
@@ -21,7 +22,8 @@ static_assert(MT_E_TIMEOUT == 5 && MT_E_BUSY == 6 && MT_E_RANGE == 7, "");
 static_assert(MT_E_TASK_ORDER == 8 && MT_E_TASK_RATE == 9 && MT_E_TASK_BUDGET == 10, "");
 static_assert(MT_E_TASK_COUNT == 11 && MT_E_LOOP_RATE == 12 && MT_E_TASK_FN == 13, "");
 static_assert(MT_W_DROPPED_OLDEST == 14 && MT_E_MISSION_CMD == 15 && MT_E_MISSION_PARAM == 16, "");
-static_assert(MT_E_MISSION_LOCATION == 17 && MT_E_MISSION_FRAME == 18 && MT_E_MISSION_JUMP == 19, "");
+static_assert(MT_E_MISSION_LOCATION == 17 && MT_E_MISSION_FRAME == 18 && MT_E_MISSION_JUMP == 19,
+              "");
 static_assert(MT_E_MISSION_LOOP == 20 && MT_E_MISSION_SIZE == 21 && MT_E_MISSION_SYNTAX == 22, "");
 static_assert(MT_E_STATE == 23 && MT_W_WQ_MERGED == 24, "");
 static_assert(MT_E_BUS_MSG_SIZE == 25 && MT_E_BUS_QUEUE_LEN == 26, "");
@@ -120,4 +122,4 @@ TEST(CxxHeaders, CLinkageCallsWork)
     EXPECT_EQ(q.nitems, 0u);
 }
 
-}  // namespace
+} // namespace

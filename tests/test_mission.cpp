@@ -8,7 +8,8 @@
 
 using namespace mt_test;
 
-namespace {
+namespace
+{
 
 std::vector<mt_mission_cmd_t> Plain()
 {
@@ -263,7 +264,8 @@ TEST(Mission, NextNavIsPureAndMatchesExecution)
             ASSERT_EQ(st, MT_OK);
             EXPECT_EQ(nav_after, v.m->nav);
         }
-        EXPECT_EQ(std::memcmp(before.get(), v.m.get(), sizeof(mt_mission_t)), 0) << "look-ahead changed state";
+        EXPECT_EQ(std::memcmp(before.get(), v.m.get(), sizeof(mt_mission_t)), 0)
+            << "look-ahead changed state";
         mt_mission_update(v.m.get());
     }
     EXPECT_EQ(v.Starts(), "1 3 2 1 3 2 1 3 2 1 3 2 5");
@@ -317,7 +319,10 @@ TEST(MissionCheck, EveryRejectionHasItsStatusAndIndex)
         {"negative delay", {Home(), Wp(), Delay(-1)}, MT_E_MISSION_PARAM, 2},
         {"yaw angle 400", {Home(), Cmd(MT_MAV_CMD_CONDITION_YAW, 400000)}, MT_E_MISSION_PARAM, 1},
         {"servo channel 0", {Home(), Wp(), Servo(0)}, MT_E_MISSION_PARAM, 2},
-        {"servo fractional", {Home(), Cmd(MT_MAV_CMD_DO_SET_SERVO, 5500, 1500000)}, MT_E_MISSION_PARAM, 1},
+        {"servo fractional",
+         {Home(), Cmd(MT_MAV_CMD_DO_SET_SERVO, 5500, 1500000)},
+         MT_E_MISSION_PARAM,
+         1},
         {"speed type 9", {Home(), Cmd(MT_MAV_CMD_DO_CHANGE_SPEED, 9000)}, MT_E_MISSION_PARAM, 1},
         {"set home 2", {Home(), Cmd(MT_MAV_CMD_DO_SET_HOME, 2000)}, MT_E_MISSION_PARAM, 1},
         {"latitude", {Home(), Wp(), bad_lat}, MT_E_MISSION_LOCATION, 2},
@@ -328,15 +333,26 @@ TEST(MissionCheck, EveryRejectionHasItsStatusAndIndex)
         {"jump past end", {Home(), Wp(), Jump(3, 1)}, MT_E_MISSION_JUMP, 2},
         {"repeat -2", {Home(), Wp(), Jump(1, -2)}, MT_E_MISSION_JUMP, 2},
         {"repeat 32768", {Home(), Wp(), Jump(1, 32768)}, MT_E_MISSION_JUMP, 2},
-        {"fractional target", {Home(), Wp(), Cmd(MT_MAV_CMD_DO_JUMP, 1500, 1000)}, MT_E_MISSION_JUMP, 2},
+        {"fractional target",
+         {Home(), Wp(), Cmd(MT_MAV_CMD_DO_JUMP, 1500, 1000)},
+         MT_E_MISSION_JUMP,
+         2},
         {"unknown tag", {Home(), Wp(), Tag(1), JumpTag(2, 1)}, MT_E_MISSION_JUMP, 3},
-        {"do-only repeat forever (A-2)", {Home(), Servo(), Jump(1, -1), Wp()}, MT_E_MISSION_LOOP, 1},
+        {"do-only repeat forever (A-2)",
+         {Home(), Servo(), Jump(1, -1), Wp()},
+         MT_E_MISSION_LOOP,
+         1},
         {"do-only finite loop", {Home(), Wp(), Servo(), Jump(2, 3)}, MT_E_MISSION_LOOP, 2},
         {"jump to itself (A-5)", {Home(), Wp(), Jump(2, -1)}, MT_E_MISSION_LOOP, 2},
         {"jump-only cycle", {Home(), Wp(), Jump(3, -1), Jump(2, -1)}, MT_E_MISSION_LOOP, 2},
-        {"loop skipping its navs", {Home(), Servo(), Jump(5, -1), Wp(), Wp(), Servo(), Jump(1, -1)},
-         MT_E_MISSION_LOOP, 1},
-        {"tag loop without nav", {Home(), Wp(), Tag(3), Servo(), JumpTag(3, -1)}, MT_E_MISSION_LOOP, 2},
+        {"loop skipping its navs",
+         {Home(), Servo(), Jump(5, -1), Wp(), Wp(), Servo(), Jump(1, -1)},
+         MT_E_MISSION_LOOP,
+         1},
+        {"tag loop without nav",
+         {Home(), Wp(), Tag(3), Servo(), JumpTag(3, -1)},
+         MT_E_MISSION_LOOP,
+         2},
     };
     for (const Bad &c : cases) {
         Vehicle v;
@@ -401,10 +417,11 @@ TEST(MissionCheck, ManyJumpsNeverOverflowATable)
 
 TEST(MissionCheck, CheckCmdAcceptsEveryTableCommand)
 {
-    for (uint16_t id : {16, 17, 18, 19, 20, 21, 22, 30, 31, 82, 83, 84, 85, 92, 93, 94, 112, 113, 114, 176,
-                        179, 181, 182, 184, 188, 189, 191, 194, 195, 197, 201, 202, 203, 205, 206, 207, 208,
-                        210, 211, 212, 213, 214, 215, 216, 217, 222, 223, 1000, 2000, 2001, 2500, 2501, 3000,
-                        42702, 42703}) {
+    for (uint16_t id :
+         {16,  17,  18,  19,  20,  21,   22,   30,   31,   82,   83,   84,    85,   92,
+          93,  94,  112, 113, 114, 176,  179,  181,  182,  184,  188,  189,   191,  194,
+          195, 197, 201, 202, 203, 205,  206,  207,  208,  210,  211,  212,   213,  214,
+          215, 216, 217, 222, 223, 1000, 2000, 2001, 2500, 2501, 3000, 42702, 42703}) {
         std::vector<mt_mission_cmd_t> c{Home(), Cmd(id)};
         EXPECT_EQ(mt_mission_check_cmd(c.data(), 2, 1), MT_OK) << id;
     }

@@ -17,7 +17,8 @@
 #define MT_MISSIONS_DIR "tests/missions"
 #endif
 
-namespace {
+namespace
+{
 
 std::string ReadFile(const std::string &name)
 {
@@ -94,10 +95,10 @@ Plan Check(const std::string &text, size_t max_plan = 200)
     return p;
 }
 
-const char *const kValidFiles[] = {"plain.waypoints",           "nested_jumps.waypoints",
-                                   "repeat_forever.waypoints",  "jump_tags.waypoints",
-                                   "do_only_stretches.waypoints", "conditions.waypoints",
-                                   "land_rtl.waypoints"};
+const char *const kValidFiles[] = {
+    "plain.waypoints",     "nested_jumps.waypoints",      "repeat_forever.waypoints",
+    "jump_tags.waypoints", "do_only_stretches.waypoints", "conditions.waypoints",
+    "land_rtl.waypoints"};
 
 TEST(MissionFile, EveryValidFileRoundTripsExactly)
 {
@@ -163,20 +164,25 @@ TEST(MissionFile, MalformedTextGivesLineFieldAndReason)
     const std::vector<BadText> cases = {
         {"empty", "", MT_E_MISSION_SYNTAX, 1, 0, "empty file"},
         {"wrong header", "QGC WPL 120\n", MT_E_MISSION_SYNTAX, 1, 0, "header"},
-        {"header only after data", "0 1 0 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 1, 0, "header"},
+        {"header only after data", "0 1 0 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 1, 0,
+         "header"},
         {"missing fields", h + "1\t0\t3\t16\t0\t0\n", MT_E_MISSION_SYNTAX, 3, 7, "missing"},
-        {"extra field", h + "1 0 3 16 0 0 0 0 0 0 0 1 9\n", MT_E_MISSION_SYNTAX, 3, 13, "more than 12"},
+        {"extra field", h + "1 0 3 16 0 0 0 0 0 0 0 1 9\n", MT_E_MISSION_SYNTAX, 3, 13,
+         "more than 12"},
         {"bad seq", h + "x 0 3 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 1, "seq"},
         {"seq gap", h + "5 0 3 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 1, "expected 1"},
         {"current 2", h + "1 2 3 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 2, "current"},
         {"negative frame", h + "1 0 -3 16 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 3, "frame"},
         {"command word", h + "1 0 3 WP 0 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 4, "command"},
-        {"param garbage", h + "1 0 3 16 0 0 0 1.2.3 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 8, "param4"},
+        {"param garbage", h + "1 0 3 16 0 0 0 1.2.3 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3, 8,
+         "param4"},
         {"alt garbage", h + "1 0 3 16 0 0 0 0 0 0 12m 1\n", MT_E_MISSION_SYNTAX, 3, 11, "altitude"},
-        {"autocontinue", h + "1 0 3 16 0 0 0 0 0 0 0 yes\n", MT_E_MISSION_SYNTAX, 3, 12, "autocontinue"},
-        {"long token", h + "1 0 3 16 " + std::string(100, '1') + " 0 0 0 0 0 0 1\n", MT_E_MISSION_SYNTAX, 3,
-         5, "too long"},
-        {"NUL", h + std::string("1 0 3 16 0\0 0 0 0 0 0 0 1\n", 26), MT_E_MISSION_SYNTAX, 3, 5, "NUL"},
+        {"autocontinue", h + "1 0 3 16 0 0 0 0 0 0 0 yes\n", MT_E_MISSION_SYNTAX, 3, 12,
+         "autocontinue"},
+        {"long token", h + "1 0 3 16 " + std::string(100, '1') + " 0 0 0 0 0 0 1\n",
+         MT_E_MISSION_SYNTAX, 3, 5, "too long"},
+        {"NUL", h + std::string("1 0 3 16 0\0 0 0 0 0 0 0 1\n", 26), MT_E_MISSION_SYNTAX, 3, 5,
+         "NUL"},
     };
     for (const BadText &c : cases) {
         Parsed p = Parse(c.text);
@@ -330,10 +336,11 @@ TEST(MissionPlan, JsonShape)
     Plan p = Check(ReadFile("repeat_forever.waypoints"), 3);
     std::string j(mt_report_json(&p.rep, nullptr, 0) + 1, '\0');
     mt_report_json(&p.rep, &j[0], j.size());
-    EXPECT_EQ(j.rfind("{\"valid\": true, \"errors\": [], \"plan\": [{\"index\": 1, \"command\": 22, "
-                      "\"name\": \"TAKEOFF\", \"kind\": \"nav\"}",
-                      0),
-              0u)
+    EXPECT_EQ(
+        j.rfind("{\"valid\": true, \"errors\": [], \"plan\": [{\"index\": 1, \"command\": 22, "
+                "\"name\": \"TAKEOFF\", \"kind\": \"nav\"}",
+                0),
+        0u)
         << j;
     EXPECT_NE(j.find("\"truncated\": true}"), std::string::npos);
     Plan b = Check("QGC WPL 110\n0 1 0 16 0 0 0 0 0 0 0 1\n1 0 3 16 \"x 0 0 0 0 0 0 1\n");

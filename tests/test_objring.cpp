@@ -8,7 +8,8 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::Rng;
 
@@ -17,7 +18,10 @@ struct Obj {
     uint32_t check;
 };
 
-Obj mk(uint32_t seq) { return Obj{seq, seq * 2654435761u + 7u}; }
+Obj mk(uint32_t seq)
+{
+    return Obj{seq, seq * 2654435761u + 7u};
+}
 
 struct ORing {
     std::vector<uint8_t> mem;
@@ -51,7 +55,10 @@ struct ORing {
 
 struct ConsumerHalf {
     uint32_t head, tail_cache, lost;
-    explicit ConsumerHalf(const mt_oring_t &r) : head(r.head), tail_cache(r.tail_cache), lost(r.lost) {}
+    explicit ConsumerHalf(const mt_oring_t &r)
+        : head(r.head), tail_cache(r.tail_cache), lost(r.lost)
+    {
+    }
     bool operator==(const ConsumerHalf &o) const
     {
         return head == o.head && tail_cache == o.tail_cache && lost == o.lost;
@@ -63,22 +70,22 @@ TEST(ObjRingInit, Statuses)
     uint8_t buf[64];
     mt_oring_t r;
 
-    EXPECT_EQ(mt_oring_init(&r, buf, 0u, 4u), MT_E_INVALID);  // elem 0
+    EXPECT_EQ(mt_oring_init(&r, buf, 0u, 4u), MT_E_INVALID); // elem 0
     EXPECT_EQ(r.cap, 0u);
-    EXPECT_EQ(mt_oring_init(&r, buf, 4u, 0u), MT_E_INVALID);  // cap 0
+    EXPECT_EQ(mt_oring_init(&r, buf, 4u, 0u), MT_E_INVALID); // cap 0
     EXPECT_EQ(r.cap, 0u);
     // (cap + 1) * elem above MT_ORING_BYTES_MAX
     EXPECT_EQ(mt_oring_init(&r, buf, 2u, 0x20000000u), MT_E_INVALID);
     EXPECT_EQ(r.cap, 0u);
     EXPECT_EQ(mt_oring_init(&r, buf, 0x10000u, 0x4000u), MT_E_INVALID);
     // products that wrap in 32 bits must not pass as small ones
-    EXPECT_EQ(mt_oring_init(&r, buf, 0x10000u, 0xFFFFu), MT_E_INVALID);      // 2^32 -> 0
-    EXPECT_EQ(mt_oring_init(&r, buf, 1u, 0xFFFFFFFFu), MT_E_INVALID);        // cap + 1 -> 0
-    EXPECT_EQ(mt_oring_init(&r, buf, 0x80000000u, 1u), MT_E_INVALID);        // 2^32 -> 0
+    EXPECT_EQ(mt_oring_init(&r, buf, 0x10000u, 0xFFFFu), MT_E_INVALID); // 2^32 -> 0
+    EXPECT_EQ(mt_oring_init(&r, buf, 1u, 0xFFFFFFFFu), MT_E_INVALID);   // cap + 1 -> 0
+    EXPECT_EQ(mt_oring_init(&r, buf, 0x80000000u, 1u), MT_E_INVALID);   // 2^32 -> 0
     EXPECT_EQ(mt_oring_init(&r, buf, 0xFFFFFFFFu, 0xFFFFFFFFu), MT_E_INVALID);
     EXPECT_EQ(r.cap, 0u);
 
-    ASSERT_EQ(mt_oring_init(&r, buf, 4u, 15u), MT_OK);  // 64 bytes: exactly the storage
+    ASSERT_EQ(mt_oring_init(&r, buf, 4u, 15u), MT_OK); // 64 bytes: exactly the storage
     EXPECT_EQ(r.cap, 15u);
     EXPECT_EQ(r.slots, 16u);
     EXPECT_EQ(r.elem, 4u);
@@ -118,7 +125,7 @@ TEST(ObjRing, PopOnEmptyLeavesOutputUntouched)
     EXPECT_EQ(o.check, 0xFEEDFACEu);
     const Obj n = mk(5u);
     EXPECT_EQ(mt_oring_update_front(&g.r, &n), MT_E_EMPTY);
-    EXPECT_EQ(mt_oring_available(&g.r), 0u);  // update_front on empty did not add anything
+    EXPECT_EQ(mt_oring_available(&g.r), 0u); // update_front on empty did not add anything
 }
 
 TEST(ObjRing, FullPushIsRejectedAndCounted)
@@ -132,7 +139,7 @@ TEST(ObjRing, FullPushIsRejectedAndCounted)
     EXPECT_EQ(g.push(4u), MT_E_FULL);
     EXPECT_EQ(g.r.rejected, 2u);
     EXPECT_EQ(g.r.tail, tail);
-    EXPECT_EQ(g.mem, before);  // nothing written, not even the spare slot
+    EXPECT_EQ(g.mem, before); // nothing written, not even the spare slot
     EXPECT_EQ(g.drain(), (std::vector<uint32_t>{1u, 2u}));
     EXPECT_EQ(g.push(5u), MT_OK);
     EXPECT_EQ(g.drain(), (std::vector<uint32_t>{5u}));
@@ -158,7 +165,7 @@ TEST(ObjRing, PeekAndUpdateFront)
     EXPECT_EQ(g.push(11u), MT_OK);
     EXPECT_EQ(mt_oring_peek(&g.r, &o), MT_OK);
     EXPECT_EQ(o.seq, 10u);
-    EXPECT_EQ(mt_oring_available(&g.r), 2u);  // peek does not consume
+    EXPECT_EQ(mt_oring_available(&g.r), 2u); // peek does not consume
     const Obj repl = mk(99u);
     EXPECT_EQ(mt_oring_update_front(&g.r, &repl), MT_OK);
     EXPECT_EQ(mt_oring_peek(&g.r, &o), MT_OK);
@@ -176,7 +183,7 @@ TEST(ObjRing, Flush)
     EXPECT_EQ(g.push(3u), MT_OK);
     const uint32_t tail = g.r.tail;
     EXPECT_EQ(mt_oring_flush(&g.r), 3u);
-    EXPECT_EQ(g.r.tail, tail);  // consumer's clear: producer index untouched
+    EXPECT_EQ(g.r.tail, tail); // consumer's clear: producer index untouched
     EXPECT_EQ(mt_oring_available(&g.r), 0u);
     EXPECT_EQ(mt_oring_space(&g.r), 4u);
     EXPECT_EQ(g.r.lost, 0u);
@@ -190,8 +197,8 @@ TEST(ObjRing, FlushAfterDropCountsTheDropAsLost)
     EXPECT_EQ(g.push(1u), MT_OK);
     EXPECT_EQ(g.push(2u), MT_OK);
     EXPECT_EQ(g.push_drop(3u), MT_W_DROPPED_OLDEST);
-    EXPECT_EQ(mt_oring_flush(&g.r), 2u);  // the two retained objects
-    EXPECT_EQ(g.r.lost, 1u);               // the dropped one
+    EXPECT_EQ(mt_oring_flush(&g.r), 2u); // the two retained objects
+    EXPECT_EQ(g.r.lost, 1u);             // the dropped one
     EXPECT_EQ(mt_oring_available(&g.r), 0u);
 }
 
@@ -212,9 +219,9 @@ TEST(ObjRingDropOldest, ConsumerSeesNewestCapObjectsAndCountsOneLost)
         for (uint32_t k = 1u; k <= cap; ++k) {
             ASSERT_EQ(g.push(k), MT_OK);
         }
-        EXPECT_EQ(g.push(cap + 1u), MT_E_FULL);  // plain push never drops
+        EXPECT_EQ(g.push(cap + 1u), MT_E_FULL); // plain push never drops
         EXPECT_EQ(g.push_drop(cap + 1u), MT_W_DROPPED_OLDEST) << cap;
-        EXPECT_EQ(mt_oring_available(&g.r), cap);  // never reports more than cap
+        EXPECT_EQ(mt_oring_available(&g.r), cap); // never reports more than cap
         EXPECT_EQ(mt_oring_space(&g.r), 0u);
         std::vector<uint32_t> want;
         for (uint32_t k = 2u; k <= cap + 1u; ++k) {
@@ -222,7 +229,7 @@ TEST(ObjRingDropOldest, ConsumerSeesNewestCapObjectsAndCountsOneLost)
         }
         EXPECT_EQ(g.drain(), want) << cap;
         EXPECT_EQ(g.r.lost, 1u);
-        EXPECT_EQ(g.r.rejected, 1u);  // the plain push above
+        EXPECT_EQ(g.r.rejected, 1u); // the plain push above
     }
 }
 
@@ -247,10 +254,10 @@ TEST(ObjRingDropOldest, SecondDropBeforeConsumerRunsIsRejected)
     }
     EXPECT_EQ(g.push_drop(10u), MT_W_DROPPED_OLDEST);
     Obj o{};
-    EXPECT_EQ(mt_oring_pop(&g.r, &o), MT_OK);  // the consumer drops 7 and delivers 8
+    EXPECT_EQ(mt_oring_pop(&g.r, &o), MT_OK); // the consumer drops 7 and delivers 8
     EXPECT_EQ(o.seq, 8u);
     EXPECT_EQ(g.r.lost, 2u);
-    EXPECT_EQ(g.push_drop(11u), MT_OK);  // one slot free again: no drop
+    EXPECT_EQ(g.push_drop(11u), MT_OK); // one slot free again: no drop
     EXPECT_EQ(g.drain(), (std::vector<uint32_t>{9u, 10u, 11u}));
     EXPECT_EQ(g.r.lost, 2u);
 }
@@ -263,15 +270,15 @@ TEST(ObjRingDropOldest, PeekAndUpdateFrontPerformThePendingDrop)
     ASSERT_EQ(g.push(2u), MT_OK);
     ASSERT_EQ(g.push_drop(3u), MT_W_DROPPED_OLDEST);
     EXPECT_EQ(mt_oring_peek(&g.r, &o), MT_OK);
-    EXPECT_EQ(o.seq, 2u);  // 1 was the oldest: dropped
+    EXPECT_EQ(o.seq, 2u); // 1 was the oldest: dropped
     EXPECT_EQ(g.r.lost, 1u);
     EXPECT_EQ(mt_oring_peek(&g.r, &o), MT_OK);
     EXPECT_EQ(o.seq, 2u);
-    EXPECT_EQ(g.r.lost, 1u);  // dropped once only
+    EXPECT_EQ(g.r.lost, 1u); // dropped once only
 
     ASSERT_EQ(g.push_drop(4u), MT_W_DROPPED_OLDEST);
     const Obj repl = mk(77u);
-    EXPECT_EQ(mt_oring_update_front(&g.r, &repl), MT_OK);  // drops 2, replaces 3
+    EXPECT_EQ(mt_oring_update_front(&g.r, &repl), MT_OK); // drops 2, replaces 3
     EXPECT_EQ(g.r.lost, 2u);
     EXPECT_EQ(g.drain(), (std::vector<uint32_t>{77u, 4u}));
 }
@@ -282,7 +289,7 @@ TEST(ObjRingDropOldest, PeekAndUpdateFrontPerformThePendingDrop)
 TEST(ObjRingDropOldest, R1TwoForcedPushesMakeRoom)
 {
     ORing g(4u);
-    for (uint32_t k = 1u; k <= 3u; ++k) {  // one free slot left
+    for (uint32_t k = 1u; k <= 3u; ++k) { // one free slot left
         ASSERT_EQ(g.push(k), MT_OK);
     }
     EXPECT_EQ(g.push_drop(4u), MT_OK);
@@ -302,7 +309,7 @@ TEST(ObjRingDropOldest, R1TwoForcedPushesMakeRoom)
     EXPECT_EQ(g.push_drop(11u), MT_OK);
     EXPECT_EQ(g.push_drop(12u), MT_W_DROPPED_OLDEST);
     EXPECT_EQ(g.drain(), (std::vector<uint32_t>{9u, 10u, 11u, 12u}));
-    EXPECT_EQ(g.r.lost, 3u);  // 1, 6, 8
+    EXPECT_EQ(g.r.lost, 3u); // 1, 6, 8
     EXPECT_EQ(g.r.rejected, 0u);
 }
 
@@ -313,18 +320,18 @@ TEST(ObjRingDropOldest, R3ProducerNeverWritesConsumerHalf)
     ORing g(3u);
     Obj o{};
     ASSERT_EQ(g.push(1u), MT_OK);
-    ASSERT_EQ(mt_oring_pop(&g.r, &o), MT_OK);  // consumer fields now non-zero
+    ASSERT_EQ(mt_oring_pop(&g.r, &o), MT_OK); // consumer fields now non-zero
     ASSERT_EQ(g.push(2u), MT_OK);
     (void)mt_oring_available(&g.r);
 
     ConsumerHalf before(g.r);
-    EXPECT_EQ(g.push_drop(3u), MT_OK);  // room path
+    EXPECT_EQ(g.push_drop(3u), MT_OK); // room path
     EXPECT_TRUE(ConsumerHalf(g.r) == before);
     EXPECT_EQ(g.push_drop(4u), MT_OK);
     EXPECT_TRUE(ConsumerHalf(g.r) == before);
-    EXPECT_EQ(g.push_drop(5u), MT_W_DROPPED_OLDEST);  // drop path
+    EXPECT_EQ(g.push_drop(5u), MT_W_DROPPED_OLDEST); // drop path
     EXPECT_TRUE(ConsumerHalf(g.r) == before);
-    EXPECT_EQ(g.push_drop(6u), MT_E_FULL);  // rejected path
+    EXPECT_EQ(g.push_drop(6u), MT_E_FULL); // rejected path
     EXPECT_TRUE(ConsumerHalf(g.r) == before);
     (void)mt_oring_space(&g.r);
     EXPECT_EQ(g.push(7u), MT_E_FULL);
@@ -395,7 +402,7 @@ void differential(uint32_t cap, uint32_t elem, uint64_t seed, uint32_t ops)
         const uint32_t head0 = r.head;
         switch (rng.below(9u)) {
         case 0:
-        case 1: {  // push
+        case 1: { // push
             const auto v = fresh();
             const mt_status_t st = mt_oring_push(&r, v.data());
             if (m.q.size() >= cap) {
@@ -408,7 +415,7 @@ void differential(uint32_t cap, uint32_t elem, uint64_t seed, uint32_t ops)
             break;
         }
         case 2:
-        case 3: {  // push_drop_oldest
+        case 3: { // push_drop_oldest
             const auto v = fresh();
             const ConsumerHalf ch(r);
             const mt_status_t st = mt_oring_push_drop_oldest(&r, v.data());
@@ -427,7 +434,7 @@ void differential(uint32_t cap, uint32_t elem, uint64_t seed, uint32_t ops)
             break;
         }
         case 4:
-        case 5: {  // pop
+        case 5: { // pop
             m.sync();
             const mt_status_t st = mt_oring_pop(&r, out.data());
             if (m.q.empty()) {
@@ -439,7 +446,7 @@ void differential(uint32_t cap, uint32_t elem, uint64_t seed, uint32_t ops)
             }
             break;
         }
-        case 6: {  // peek or update_front
+        case 6: { // peek or update_front
             m.sync();
             if (rng.below(2u) == 0u) {
                 const mt_status_t st = mt_oring_peek(&r, out.data());
@@ -457,13 +464,13 @@ void differential(uint32_t cap, uint32_t elem, uint64_t seed, uint32_t ops)
             }
             break;
         }
-        case 7: {  // available / space (no drop performed)
+        case 7: { // available / space (no drop performed)
             const uint32_t n = static_cast<uint32_t>(m.q.size());
             ASSERT_EQ(mt_oring_available(&r), std::min(n, cap));
             ASSERT_EQ(mt_oring_space(&r), n >= cap ? 0u : cap - n);
             break;
         }
-        default: {  // flush, rarely
+        default: { // flush, rarely
             if (rng.below(6u) == 0u) {
                 m.sync();
                 ASSERT_EQ(mt_oring_flush(&r), m.q.size());
@@ -513,10 +520,10 @@ TEST(ObjRingValid, EachBrokenRelationIsReported)
     EXPECT_FALSE(mt_oring_valid(&r)) << "head outside [0, 2 slots)";
     r = good;
     r.tail = 2u;
-    r.tail_cache = 1u;  // the consumer's cached tail may lag behind the real one
+    r.tail_cache = 1u; // the consumer's cached tail may lag behind the real one
     r.head_cache = 0u;
     EXPECT_TRUE(mt_oring_valid(&r));
-    r.tail_cache = 3u;  // consumer's cached tail ahead of the real one
+    r.tail_cache = 3u; // consumer's cached tail ahead of the real one
     EXPECT_FALSE(mt_oring_valid(&r)) << "consumer's cached tail ahead of the data";
 }
 
@@ -533,4 +540,4 @@ TEST(ObjRingDifferential, AgainstReferenceModel)
     }
 }
 
-}  // namespace
+} // namespace

@@ -7,7 +7,8 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::RealTime;
 using mt_test::SimTime;
@@ -36,13 +37,13 @@ TEST_F(PortSim, SimulatedTimeMovesOnlyWhenMoved)
     EXPECT_EQ(mt_port_now_us(), mt_test::kSimStartUs);
     mt_posix_sim_advance(123u);
     EXPECT_EQ(mt_port_now_us(), mt_test::kSimStartUs + 123u);
-    mt_posix_sim_advance(UINT64_MAX);  // saturates instead of wrapping
+    mt_posix_sim_advance(UINT64_MAX); // saturates instead of wrapping
     EXPECT_EQ(mt_port_now_us(), UINT64_MAX);
-    mt_posix_sim_enable(5u);  // restart at another time
+    mt_posix_sim_enable(5u); // restart at another time
     EXPECT_EQ(mt_port_now_us(), 5u);
     mt_posix_sim_disable();
     EXPECT_FALSE(mt_posix_sim_active());
-    EXPECT_NE(mt_port_now_us(), 5u);  // real clock again (microseconds since boot)
+    EXPECT_NE(mt_port_now_us(), 5u); // real clock again (microseconds since boot)
 }
 
 TEST_F(PortSim, SuspendTimesOutAndAdvancesSimulatedTime)
@@ -79,7 +80,7 @@ TEST_F(PortReal, SuspendResumeOnRealThreads)
         parked = ref != nullptr;
         if (parked) {
             EXPECT_TRUE(mt_port_resume_i(&ref));
-            EXPECT_EQ(ref, nullptr);  // cleared by the resume
+            EXPECT_EQ(ref, nullptr); // cleared by the resume
         }
         mt_port_unlock();
         return parked;
@@ -94,7 +95,7 @@ TEST_F(PortReal, RealSuspendTimesOutAndClearsReference)
     mt_port_lock();
     EXPECT_EQ(mt_port_suspend_s(&ref, 1000u), MT_PORT_TIMEOUT);
     EXPECT_EQ(ref, nullptr);
-    EXPECT_FALSE(mt_port_resume_i(&ref));  // a later resume finds nobody
+    EXPECT_FALSE(mt_port_resume_i(&ref)); // a later resume finds nobody
     mt_port_unlock();
 }
 
@@ -104,7 +105,7 @@ TEST_F(PortReal, RealSuspendTimesOutAndClearsReference)
 TEST_F(PortReal, TaskAndIsrLockAreOneCriticalSection)
 {
     const uint32_t n = mt_test::kTsan ? 20000u : 100000u;
-    uint64_t counter = 0u;  // deliberately not atomic
+    uint64_t counter = 0u; // deliberately not atomic
     std::thread isr([&] {
         for (uint32_t k = 0; k < n; ++k) {
             mt_port_lock_isr();
@@ -135,9 +136,9 @@ TEST_F(PortReal, ThreadCreateStatuses)
     uint8_t stack[256];
     EXPECT_EQ(mt_port_thread_create("x", nullptr, &mine, stack, sizeof(stack), MT_PRIO_IO, 0),
               MT_E_INVALID);
-    EXPECT_EQ(mt_port_thread_create("x", thread_body, &mine, stack, sizeof(stack),
-                                    MT_PRIO_BASE_COUNT, 0),
-              MT_E_INVALID);
+    EXPECT_EQ(
+        mt_port_thread_create("x", thread_body, &mine, stack, sizeof(stack), MT_PRIO_BASE_COUNT, 0),
+        MT_E_INVALID);
     EXPECT_EQ(mt_port_thread_create("x", thread_body, &mine, stack, sizeof(stack),
                                     static_cast<mt_prio_base_t>(100), 0),
               MT_E_INVALID);
@@ -158,8 +159,8 @@ TEST_F(PortReal, ThreadCreateStatuses)
     EXPECT_GE(created, 1u);
     EXPECT_LT(created, 1000u);
     mt_posix_join_all();
-    EXPECT_EQ(mine.load(), created);  // every created thread ran once
-    (void)mt_posix_rt_priorities();   // environment-dependent: callable, no assertion
+    EXPECT_EQ(mine.load(), created); // every created thread ran once
+    (void)mt_posix_rt_priorities();  // environment-dependent: callable, no assertion
 
     // joining frees the table
     EXPECT_EQ(mt_port_thread_create(nullptr, thread_body, &mine, nullptr, 0u, MT_PRIO_MAIN, 0),
@@ -206,4 +207,4 @@ TEST(PortDeath, UnlockWithoutLockHaltsInAFreshProcess)
     EXPECT_DEATH(mt_port_unlock(), "not held|unlock of an unlocked");
 }
 
-}  // namespace
+} // namespace

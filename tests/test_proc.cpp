@@ -8,15 +8,20 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::RealTime;
 using mt_test::Rng;
 using mt_test::SimTime;
 using mt_test::wait_until;
 
-void noop(void *) {}
-void noop2(void *) {}
+void noop(void *)
+{
+}
+void noop2(void *)
+{
+}
 
 int g_tags[16];
 
@@ -35,11 +40,11 @@ TEST(ProcRegister, Statuses)
     EXPECT_EQ(p.procs[0].fn, noop);
     EXPECT_EQ(p.procs[0].arg, &g_tags[0]);
     EXPECT_EQ(p.procs[0].calls, 0u);
-    EXPECT_EQ(mt_proc_register(&p, noop, &g_tags[0]), MT_E_DUPLICATE);  // same (fn, arg)
+    EXPECT_EQ(mt_proc_register(&p, noop, &g_tags[0]), MT_E_DUPLICATE); // same (fn, arg)
     EXPECT_EQ(p.count, 1u);
-    EXPECT_EQ(mt_proc_register(&p, noop, &g_tags[1]), MT_OK);   // same fn, other arg
-    EXPECT_EQ(mt_proc_register(&p, noop2, &g_tags[0]), MT_OK);  // other fn, same arg
-    EXPECT_EQ(mt_proc_register(&p, noop, nullptr), MT_OK);      // NULL arg is an arg
+    EXPECT_EQ(mt_proc_register(&p, noop, &g_tags[1]), MT_OK);  // same fn, other arg
+    EXPECT_EQ(mt_proc_register(&p, noop2, &g_tags[0]), MT_OK); // other fn, same arg
+    EXPECT_EQ(mt_proc_register(&p, noop, nullptr), MT_OK);     // NULL arg is an arg
     EXPECT_EQ(mt_proc_register(&p, noop, nullptr), MT_E_DUPLICATE);
     EXPECT_EQ(p.count, 4u);
 }
@@ -88,7 +93,7 @@ struct Recorder {
 struct Entry {
     Recorder *rec;
     int id;
-    std::vector<uint64_t> costs;  // simulated run time per call (cycled)
+    std::vector<uint64_t> costs; // simulated run time per call (cycled)
     size_t call = 0;
     bool reenter = false;
 };
@@ -124,7 +129,7 @@ TEST_F(ProcSim, DispatchOrderIsRegistrationOrder)
     Recorder rec;
     std::vector<Entry> es;
     es.reserve(MT_CFG_PROC_MAX);
-    const int ids[] = {5, 2, 7, 0, 3, 6, 1, 4};  // registration order != id order
+    const int ids[] = {5, 2, 7, 0, 3, 6, 1, 4}; // registration order != id order
     for (int id : ids) {
         es.push_back(Entry{&rec, id, {}, 0u, false});
         ASSERT_EQ(mt_proc_register(&p, entry_fn, &es.back()), MT_OK);
@@ -147,7 +152,7 @@ TEST_F(ProcSim, PerProcStatisticsInSimulatedTime)
     Recorder rec;
     Entry a{&rec, 0, {5u, 40u, 20u}, 0u, false};
     Entry b{&rec, 1, {250u}, 0u, false};
-    Entry c{&rec, 2, {}, 0u, false};  // takes no time
+    Entry c{&rec, 2, {}, 0u, false}; // takes no time
     ASSERT_EQ(mt_proc_register(&p, entry_fn, &a), MT_OK);
     ASSERT_EQ(mt_proc_register(&p, entry_fn, &b), MT_OK);
     ASSERT_EQ(mt_proc_register(&p, entry_fn, &c), MT_OK);
@@ -165,7 +170,7 @@ TEST_F(ProcSim, PerProcStatisticsInSimulatedTime)
     EXPECT_EQ(p.procs[2].calls, 3u);
     EXPECT_EQ(p.procs[2].max_us, 0u);
     EXPECT_EQ(p.procs[2].total_us, 0u);
-    EXPECT_EQ(p.max_round_us, 290u);  // 40 + 250
+    EXPECT_EQ(p.max_round_us, 290u); // 40 + 250
     EXPECT_EQ(p.dispatches, 3u);
 }
 
@@ -174,10 +179,10 @@ TEST_F(ProcSim, LongCallSaturatesMaxAt32Bits)
     mt_proc_set_t p;
     mt_proc_set_init(&p);
     Recorder rec;
-    Entry a{&rec, 0, {0x100000005ull}, 0u, false};  // longer than 2^32 us
+    Entry a{&rec, 0, {0x100000005ull}, 0u, false}; // longer than 2^32 us
     ASSERT_EQ(mt_proc_register(&p, entry_fn, &a), MT_OK);
     ASSERT_EQ(mt_proc_dispatch(&p), MT_OK);
-    EXPECT_EQ(p.procs[0].max_us, 0xFFFFFFFFu);  // not 5 (truncated)
+    EXPECT_EQ(p.procs[0].max_us, 0xFFFFFFFFu); // not 5 (truncated)
     EXPECT_EQ(p.procs[0].total_us, 0x100000005ull);
     EXPECT_EQ(p.max_round_us, 0xFFFFFFFFu);
 }
@@ -195,12 +200,12 @@ TEST_F(ProcSim, ReentrantDispatchIsRefusedAndCounted)
     EXPECT_EQ(mt_proc_dispatch(&p), MT_OK);
     EXPECT_EQ(rec.nested, MT_E_BUSY);
     EXPECT_EQ(p.refused, 1u);
-    EXPECT_EQ(rec.order, (std::vector<int>{0, 1}));  // the nested call ran nothing
+    EXPECT_EQ(rec.order, (std::vector<int>{0, 1})); // the nested call ran nothing
     EXPECT_EQ(p.procs[0].calls, 1u);
     EXPECT_EQ(p.procs[1].calls, 1u);
     EXPECT_EQ(p.running, 0u);
     EXPECT_EQ(p.dispatches, 1u);
-    EXPECT_EQ(mt_proc_dispatch(&p), MT_OK);  // the set is usable afterwards
+    EXPECT_EQ(mt_proc_dispatch(&p), MT_OK); // the set is usable afterwards
     EXPECT_EQ(p.refused, 2u);
     EXPECT_EQ(p.dispatches, 2u);
 }
@@ -210,20 +215,20 @@ TEST_F(ProcSim, ReentrantDispatchIsRefusedAndCounted)
 TEST(ProcPeriod, OnTime)
 {
     uint64_t d = 1000u;
-    EXPECT_EQ(mt_proc_period_next(&d, 1000u, 1000u), 0u);  // woke exactly on the deadline
+    EXPECT_EQ(mt_proc_period_next(&d, 1000u, 1000u), 0u); // woke exactly on the deadline
     EXPECT_EQ(d, 2000u);
-    EXPECT_EQ(mt_proc_period_next(&d, 2999u, 1000u), 0u);  // one us before the next one
+    EXPECT_EQ(mt_proc_period_next(&d, 2999u, 1000u), 0u); // one us before the next one
     EXPECT_EQ(d, 3000u);
-    EXPECT_EQ(mt_proc_period_next(&d, 0u, 1000u), 0u);  // a clock behind the deadline
+    EXPECT_EQ(mt_proc_period_next(&d, 0u, 1000u), 0u); // a clock behind the deadline
     EXPECT_EQ(d, 4000u);
 }
 
 TEST(ProcPeriod, LateCountsMissedPeriodsAndStaysOnTheGrid)
 {
     uint64_t d = 1000u;
-    EXPECT_EQ(mt_proc_period_next(&d, 2000u, 1000u), 1u);  // exactly one period late
+    EXPECT_EQ(mt_proc_period_next(&d, 2000u, 1000u), 1u); // exactly one period late
     EXPECT_EQ(d, 3000u);
-    EXPECT_EQ(mt_proc_period_next(&d, 7500u, 1000u), 4u);  // 4.5 periods late
+    EXPECT_EQ(mt_proc_period_next(&d, 7500u, 1000u), 4u); // 4.5 periods late
     EXPECT_EQ(d, 8000u);
     EXPECT_EQ(mt_proc_period_next(&d, 8000u + 3u * 777u, 777u), 3u);
     EXPECT_EQ(d, 8000u + 4u * 777u);
@@ -258,15 +263,15 @@ TEST(ProcPeriod, NoDriftOverAMillionPeriods)
     for (uint32_t k = 0; k < 1000000u; ++k) {
         missed_total += mt_proc_period_next(&d, d + rng.below(period), period);
     }
-    EXPECT_EQ(d, d0 + 1000000ull * period);  // exactly on the grid: no drift
+    EXPECT_EQ(d, d0 + 1000000ull * period); // exactly on the grid: no drift
     EXPECT_EQ(missed_total, 0u);
 
     // the same with every 1000th wake-up several periods late: every period is
     // either served or counted as missed, and the grid is kept
     const uint64_t d1 = d;
     for (uint32_t k = 0; k < 1000000u; ++k) {
-        const uint64_t now = (k % 1000u == 999u) ? d + rng.range(period, 5u * period - 1u)
-                                                : d + rng.below(period);
+        const uint64_t now =
+            (k % 1000u == 999u) ? d + rng.range(period, 5u * period - 1u) : d + rng.below(period);
         missed_total += mt_proc_period_next(&d, now, period);
     }
     EXPECT_GE(missed_total, 1000u);
@@ -282,10 +287,10 @@ TEST(ProcPeriod, NoteMissedSaturates)
     mt_proc_note_missed(&p, 0u);
     EXPECT_EQ(p.periods_missed, 3u);
     mt_proc_note_missed(&p, 0xFFFFFFFCu);
-    EXPECT_EQ(p.periods_missed, 0xFFFFFFFFu);  // exact, not saturated yet
+    EXPECT_EQ(p.periods_missed, 0xFFFFFFFFu); // exact, not saturated yet
     p.periods_missed = 0xFFFFFFF0u;
     mt_proc_note_missed(&p, 0x20u);
-    EXPECT_EQ(p.periods_missed, 0xFFFFFFFFu);  // saturated, not wrapped to 0x10
+    EXPECT_EQ(p.periods_missed, 0xFFFFFFFFu); // saturated, not wrapped to 0x10
     mt_proc_note_missed(&p, 0xFFFFFFFFu);
     EXPECT_EQ(p.periods_missed, 0xFFFFFFFFu);
 }
@@ -296,7 +301,10 @@ struct Counter {
     std::atomic<uint32_t> n{0u};
 };
 
-void count_fn(void *arg) { static_cast<Counter *>(arg)->n.fetch_add(1u); }
+void count_fn(void *arg)
+{
+    static_cast<Counter *>(arg)->n.fetch_add(1u);
+}
 
 using ProcReal = RealTime;
 
@@ -339,7 +347,7 @@ TEST_F(ProcReal, TimerThreadRunsProcsAndStopsCleanly)
     EXPECT_LE(nb, na);
     EXPECT_EQ(p.running, 0u);
     EXPECT_EQ(p.refused, 0u);
-    mt_posix_proc_thread_stop(&t);  // a second stop is harmless
+    mt_posix_proc_thread_stop(&t); // a second stop is harmless
 }
 
 TEST_F(ProcReal, IoThreadRegistrationsFromSeveralThreads)
@@ -356,7 +364,8 @@ TEST_F(ProcReal, IoThreadRegistrationsFromSeveralThreads)
         regs.emplace_back([&, k] {
             for (uint32_t j = 0; j < MT_CFG_PROC_MAX; ++j) {
                 // threads race to register the same eight procs
-                const mt_status_t st = mt_proc_register(&p, count_fn, &c[(j + 2u * k) % MT_CFG_PROC_MAX]);
+                const mt_status_t st =
+                    mt_proc_register(&p, count_fn, &c[(j + 2u * k) % MT_CFG_PROC_MAX]);
                 if (st == MT_OK) {
                     ok.fetch_add(1u);
                 } else if (st == MT_E_DUPLICATE) {
@@ -380,4 +389,4 @@ TEST_F(ProcReal, IoThreadRegistrationsFromSeveralThreads)
     }
 }
 
-}  // namespace
+} // namespace

@@ -8,7 +8,8 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::Rng;
 
@@ -23,7 +24,10 @@ struct Ring {
     {
         EXPECT_EQ(mt_bring_init(&r, mem.data() + kGuard, cap), MT_OK);
     }
-    uint8_t *storage() { return mem.data() + kGuard; }
+    uint8_t *storage()
+    {
+        return mem.data() + kGuard;
+    }
     bool guards_intact() const
     {
         for (uint32_t k = 0; k < kGuard; ++k) {
@@ -62,7 +66,7 @@ TEST(ByteRingInit, Statuses)
 
     std::memset(&r, 0x5A, sizeof(r));
     EXPECT_EQ(mt_bring_init(&r, buf, 0u), MT_E_INVALID);
-    EXPECT_EQ(r.cap, 0u);  // left unusable
+    EXPECT_EQ(r.cap, 0u); // left unusable
 
     std::memset(&r, 0x5A, sizeof(r));
     EXPECT_EQ(mt_bring_init(&r, buf, MT_BRING_CAP_MAX + 1u), MT_E_INVALID);
@@ -80,7 +84,7 @@ TEST(ByteRingInit, Statuses)
     EXPECT_EQ(mt_bring_available(&r), 0u);
     EXPECT_EQ(mt_bring_space(&r), 1u);
 
-    for (uint32_t cap : {3u, 5u, 7u, 8u}) {  // non-powers of two and a power of two
+    for (uint32_t cap : {3u, 5u, 7u, 8u}) { // non-powers of two and a power of two
         ASSERT_EQ(mt_bring_init(&r, buf, cap), MT_OK) << cap;
         EXPECT_EQ(r.cap, cap);
         EXPECT_EQ(mt_bring_space(&r), cap);
@@ -99,11 +103,11 @@ TEST(ByteRingInit, R2ZeroCapacityRejectedAtInit)
 TEST(ByteRing, CapacityOneHoldsOneByte)
 {
     Ring g(1u);
-    for (int round = 0; round < 5; ++round) {  // crosses the mirror wrap (2*cap) twice
+    for (int round = 0; round < 5; ++round) { // crosses the mirror wrap (2*cap) twice
         EXPECT_EQ(g.write(seq(static_cast<uint8_t>(10 * round), 3u)), 1u);
         EXPECT_EQ(mt_bring_space(&g.r), 0u);
         EXPECT_EQ(mt_bring_available(&g.r), 1u);
-        EXPECT_EQ(g.write(seq(99u, 1u)), 0u);  // full: nothing written
+        EXPECT_EQ(g.write(seq(99u, 1u)), 0u); // full: nothing written
         EXPECT_EQ(g.read(4u), seq(static_cast<uint8_t>(10 * round), 1u));
         EXPECT_EQ(mt_bring_available(&g.r), 0u);
     }
@@ -114,10 +118,10 @@ TEST(ByteRing, PartialWriteAndRead)
 {
     Ring g(5u);
     EXPECT_EQ(g.write(seq(1u, 3u)), 3u);
-    EXPECT_EQ(g.write(seq(4u, 4u)), 2u);  // only 2 free: partial
+    EXPECT_EQ(g.write(seq(4u, 4u)), 2u); // only 2 free: partial
     EXPECT_EQ(mt_bring_space(&g.r), 0u);
     EXPECT_EQ(g.read(2u), seq(1u, 2u));
-    EXPECT_EQ(g.read(10u), seq(3u, 3u));  // partial read: only 3 left
+    EXPECT_EQ(g.read(10u), seq(3u, 3u)); // partial read: only 3 left
     EXPECT_EQ(g.read(1u), std::vector<uint8_t>{});
     EXPECT_EQ(mt_bring_write(&g.r, nullptr, 0u), 0u);
     EXPECT_EQ(mt_bring_read(&g.r, nullptr, 0u), 0u);
@@ -163,11 +167,11 @@ TEST(ByteRing, PeekVecSegments)
     Ring g(8u);
     mt_iovec_t v[2];
 
-    EXPECT_EQ(mt_bring_peek_vec(&g.r, v), 0u);  // empty
+    EXPECT_EQ(mt_bring_peek_vec(&g.r, v), 0u); // empty
     EXPECT_EQ(v[0].len, 0u);
     EXPECT_EQ(v[1].len, 0u);
 
-    EXPECT_EQ(g.write(seq(1u, 5u)), 5u);  // one segment from slot 0
+    EXPECT_EQ(g.write(seq(1u, 5u)), 5u); // one segment from slot 0
     EXPECT_EQ(mt_bring_peek_vec(&g.r, v), 1u);
     EXPECT_EQ(v[0].base, g.storage());
     EXPECT_EQ(v[0].len, 5u);
@@ -191,7 +195,7 @@ TEST(ByteRing, PeekVecSegments)
     EXPECT_EQ(joined, seq(20u, 6u));
     // peek_vec does not consume
     EXPECT_EQ(mt_bring_available(&g.r), 6u);
-    EXPECT_EQ(mt_bring_advance(&g.r, 3u), MT_OK);  // drop the first segment
+    EXPECT_EQ(mt_bring_advance(&g.r, 3u), MT_OK); // drop the first segment
     EXPECT_EQ(mt_bring_peek_vec(&g.r, v), 1u);
     EXPECT_EQ(v[0].base, g.storage());
     EXPECT_EQ(v[0].len, 3u);
@@ -202,7 +206,7 @@ TEST(ByteRing, PeekVecFullRingAtWrap)
 {
     Ring g(7u);
     move_to(g, 4u);
-    EXPECT_EQ(g.write(seq(1u, 7u)), 7u);  // full, starting at slot 4
+    EXPECT_EQ(g.write(seq(1u, 7u)), 7u); // full, starting at slot 4
     mt_iovec_t v[2];
     EXPECT_EQ(mt_bring_peek_vec(&g.r, v), 2u);
     EXPECT_EQ(v[0].base, g.storage() + 4);
@@ -224,8 +228,8 @@ TEST(ByteRing, ReserveCommitSegments)
     EXPECT_EQ(v[0].base, g.storage());
     EXPECT_EQ(v[0].len, 5u);
     EXPECT_EQ(v[1].len, 0u);
-    EXPECT_EQ(mt_bring_space(&g.r), 3u);      // reserved bytes are not free
-    EXPECT_EQ(mt_bring_available(&g.r), 0u);  // nor readable before commit
+    EXPECT_EQ(mt_bring_space(&g.r), 3u);     // reserved bytes are not free
+    EXPECT_EQ(mt_bring_available(&g.r), 0u); // nor readable before commit
     std::memcpy(v[0].base, seq(1u, 5u).data(), 5u);
     EXPECT_EQ(mt_bring_commit(&g.r, 5u), MT_OK);
     EXPECT_EQ(g.r.reserved, 0u);
@@ -248,7 +252,7 @@ TEST(ByteRing, ReserveCommitSegments)
     EXPECT_EQ(g.r.reserved, 3u);
     EXPECT_EQ(v[0].len, 3u);
     EXPECT_EQ(mt_bring_space(&g.r), 0u);
-    EXPECT_EQ(mt_bring_commit(&g.r, 0u), MT_OK);  // commit nothing: releases the reservation
+    EXPECT_EQ(mt_bring_commit(&g.r, 0u), MT_OK); // commit nothing: releases the reservation
     EXPECT_EQ(g.r.reserved, 0u);
     EXPECT_EQ(mt_bring_space(&g.r), 3u);
     EXPECT_EQ(mt_bring_available(&g.r), 5u);
@@ -276,14 +280,14 @@ TEST(ByteRing, CommitBeyondReservationIsRange)
 {
     Ring g(8u);
     mt_iovec_t v[2];
-    EXPECT_EQ(mt_bring_commit(&g.r, 1u), MT_E_RANGE);  // nothing reserved
+    EXPECT_EQ(mt_bring_commit(&g.r, 1u), MT_E_RANGE); // nothing reserved
     EXPECT_EQ(mt_bring_available(&g.r), 0u);
 
     ASSERT_EQ(mt_bring_reserve(&g.r, v, 3u), 1u);
     const uint32_t tail = g.r.tail;
     EXPECT_EQ(mt_bring_commit(&g.r, 4u), MT_E_RANGE);
-    EXPECT_EQ(g.r.tail, tail);       // nothing published
-    EXPECT_EQ(g.r.reserved, 3u);     // reservation kept
+    EXPECT_EQ(g.r.tail, tail);   // nothing published
+    EXPECT_EQ(g.r.reserved, 3u); // reservation kept
     EXPECT_EQ(mt_bring_available(&g.r), 0u);
     EXPECT_EQ(mt_bring_commit(&g.r, 3u), MT_OK);
     EXPECT_EQ(mt_bring_available(&g.r), 3u);
@@ -292,12 +296,12 @@ TEST(ByteRing, CommitBeyondReservationIsRange)
 TEST(ByteRing, AdvanceBeyondAvailableIsRange)
 {
     Ring g(8u);
-    EXPECT_EQ(mt_bring_advance(&g.r, 1u), MT_E_RANGE);  // empty
+    EXPECT_EQ(mt_bring_advance(&g.r, 1u), MT_E_RANGE); // empty
     EXPECT_EQ(mt_bring_advance(&g.r, 0u), MT_OK);
     EXPECT_EQ(g.write(seq(1u, 5u)), 5u);
     const uint32_t head = g.r.head;
     EXPECT_EQ(mt_bring_advance(&g.r, 6u), MT_E_RANGE);
-    EXPECT_EQ(g.r.head, head);  // nothing dropped
+    EXPECT_EQ(g.r.head, head); // nothing dropped
     EXPECT_EQ(mt_bring_available(&g.r), 5u);
     EXPECT_EQ(mt_bring_advance(&g.r, 2u), MT_OK);
     EXPECT_EQ(g.read(8u), seq(3u, 3u));
@@ -312,7 +316,7 @@ TEST(ByteRing, FlushDropsEverythingReadable)
     EXPECT_EQ(g.write(seq(1u, 4u)), 4u);
     const uint32_t tail = g.r.tail;
     EXPECT_EQ(mt_bring_flush(&g.r), 4u);
-    EXPECT_EQ(g.r.tail, tail);  // the consumer never writes the producer's index
+    EXPECT_EQ(g.r.tail, tail); // the consumer never writes the producer's index
     EXPECT_EQ(mt_bring_available(&g.r), 0u);
     EXPECT_EQ(mt_bring_space(&g.r), 5u);
     EXPECT_EQ(g.write(seq(40u, 5u)), 5u);
@@ -372,7 +376,7 @@ void differential(uint32_t cap, uint64_t seed, uint32_t ops)
         const uint32_t len = rng.below(cap + 3u);
         switch (rng.below(10u)) {
         case 0:
-        case 1: {  // write
+        case 1: { // write
             std::vector<uint8_t> src(len);
             for (auto &b : src) {
                 b = next++;
@@ -383,7 +387,7 @@ void differential(uint32_t cap, uint64_t seed, uint32_t ops)
             next = static_cast<uint8_t>(next - (len - n));
             break;
         }
-        case 2: {  // reserve + commit (sometimes too much first)
+        case 2: { // reserve + commit (sometimes too much first)
             mt_iovec_t v[2];
             const uint32_t segs = mt_bring_reserve(&g.r, v, len);
             const uint32_t want = std::min(len, cap - count);
@@ -395,7 +399,7 @@ void differential(uint32_t cap, uint64_t seed, uint32_t ops)
             }
             if (segs == 2u) {
                 ASSERT_EQ(v[1].base, g.storage());
-                ASSERT_EQ(g.r.tail % cap + v[0].len, cap);  // the first segment ends at the end
+                ASSERT_EQ(g.r.tail % cap + v[0].len, cap); // the first segment ends at the end
             }
             ASSERT_EQ(mt_bring_space(&g.r), cap - count - want);
             const uint32_t commit = (want == 0u) ? 0u : rng.below(want + 1u);
@@ -418,21 +422,21 @@ void differential(uint32_t cap, uint64_t seed, uint32_t ops)
             break;
         }
         case 3:
-        case 4: {  // read
+        case 4: { // read
             const uint32_t n = mt_bring_read(&g.r, buf.data(), std::min(len, cap + 8u));
             ASSERT_EQ(n, std::min(std::min(len, cap + 8u), count));
             expect_front(buf.data(), n);
             model.erase(model.begin(), model.begin() + n);
             break;
         }
-        case 5: {  // peek
+        case 5: { // peek
             const uint32_t n = mt_bring_peek(&g.r, buf.data(), std::min(len, cap + 8u));
             ASSERT_EQ(n, std::min(std::min(len, cap + 8u), count));
             expect_front(buf.data(), n);
             ASSERT_EQ(g.r.head, head0);
             break;
         }
-        case 6: {  // peek_vec + advance
+        case 6: { // peek_vec + advance
             mt_iovec_t v[2];
             const uint32_t segs = mt_bring_peek_vec(&g.r, v);
             ASSERT_EQ(v[0].len + v[1].len, count);
@@ -457,19 +461,19 @@ void differential(uint32_t cap, uint64_t seed, uint32_t ops)
             }
             break;
         }
-        case 7: {  // available / space
+        case 7: { // available / space
             ASSERT_EQ(mt_bring_available(&g.r), count);
             ASSERT_EQ(mt_bring_space(&g.r), cap - count);
             break;
         }
-        case 8: {  // flush (rarely, so the ring also runs full)
+        case 8: { // flush (rarely, so the ring also runs full)
             if (rng.below(8u) == 0u) {
                 ASSERT_EQ(mt_bring_flush(&g.r), count);
                 model.clear();
             }
             break;
         }
-        default: {  // fill to the brim, then check full behaviour
+        default: { // fill to the brim, then check full behaviour
             std::vector<uint8_t> src(cap);
             for (auto &b : src) {
                 b = next++;
@@ -522,15 +526,15 @@ TEST(ByteRingValid, EachBrokenRelationIsReported)
     EXPECT_FALSE(mt_bring_valid(&r)) << "head cache outside [0, 2 cap)";
     r = good;
     r.tail = 3u;
-    r.head = 12u;  // 7 readable bytes (mirror indices), 1 free
+    r.head = 12u; // 7 readable bytes (mirror indices), 1 free
     r.head_cache = 12u;
     r.tail_cache = 3u;
     EXPECT_TRUE(mt_bring_valid(&r));
-    r.reserved = 2u;  // only 1 byte free
+    r.reserved = 2u; // only 1 byte free
     EXPECT_FALSE(mt_bring_valid(&r)) << "reservation larger than the free space";
     r = good;
     r.tail = 5u;
-    r.head_cache = 6u;  // cached head ahead of the tail: the producer would see 15 bytes
+    r.head_cache = 6u; // cached head ahead of the tail: the producer would see 15 bytes
     EXPECT_FALSE(mt_bring_valid(&r)) << "producer's cached head ahead of the data";
 }
 
@@ -549,4 +553,4 @@ TEST(ByteRingDifferential, LargerNonPowerOfTwo)
     differential(1000u, 77u, 20000u);
 }
 
-}  // namespace
+} // namespace

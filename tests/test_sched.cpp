@@ -11,12 +11,15 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::Rng;
 using mt_test::SimTime;
 
-void dummy(void *) {}
+void dummy(void *)
+{
+}
 
 // ---- validation -------------------------------------------------------------------
 
@@ -81,7 +84,7 @@ TEST(SchedValidate, TaskCount)
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_COUNT);
     EXPECT_EQ(bad, MT_CFG_SCHED_MAX_TASKS + 1u);
     v.pop_back();
-    EXPECT_EQ(validate(v, 400u, &bad), MT_OK);  // exactly the maximum
+    EXPECT_EQ(validate(v, 400u, &bad), MT_OK); // exactly the maximum
 }
 
 TEST(SchedValidate, TaskOrder)
@@ -91,7 +94,7 @@ TEST(SchedValidate, TaskOrder)
                                 entry(MT_HZ(10), 10u, 4u), entry(MT_HZ(10), 10u, 1u)};
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_ORDER);
     EXPECT_EQ(bad, 2u);
-    v[2].priority = 5u;  // equal priorities are fine
+    v[2].priority = 5u; // equal priorities are fine
     v[3].priority = 9u;
     EXPECT_EQ(validate(v, 400u, &bad), MT_OK);
     // a fast task after a normal one
@@ -104,17 +107,17 @@ TEST(SchedValidate, TaskRate)
 {
     uint32_t bad = 0u;
     std::vector<mt_task_t> v = good_table();
-    v[3].rate_mhz = 0u;  // normal task with rate 0
+    v[3].rate_mhz = 0u; // normal task with rate 0
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_RATE);
     EXPECT_EQ(bad, 3u);
-    v[3].rate_mhz = MT_HZ(400) + 1u;  // above the loop rate
+    v[3].rate_mhz = MT_HZ(400) + 1u; // above the loop rate
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_RATE);
     EXPECT_EQ(bad, 3u);
-    v[3].rate_mhz = MT_HZ(400);  // exactly the loop rate
+    v[3].rate_mhz = MT_HZ(400); // exactly the loop rate
     EXPECT_EQ(validate(v, 400u, &bad), MT_OK);
-    v[3].rate_mhz = 1u;  // 0.001 Hz
+    v[3].rate_mhz = 1u; // 0.001 Hz
     EXPECT_EQ(validate(v, 400u, &bad), MT_OK);
-    v[1].rate_mhz = 1u;  // fast task with a rate
+    v[1].rate_mhz = 1u; // fast task with a rate
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_RATE);
     EXPECT_EQ(bad, 1u);
     // the same rate is fine at a higher loop rate
@@ -132,15 +135,15 @@ TEST(SchedValidate, TaskBudgetS5ZeroBudgetAndOverPeriod)
     v[4].budget_us = 0u;
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_BUDGET);
     EXPECT_EQ(bad, 4u);
-    v[4].budget_us = 2501u;  // longer than the 2500 us period
+    v[4].budget_us = 2501u; // longer than the 2500 us period
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_BUDGET);
     EXPECT_EQ(bad, 4u);
     v[4].budget_us = 2500u;
     EXPECT_EQ(validate(v, 400u, &bad), MT_OK);
-    v[0].budget_us = 2501u;  // a fast task's budget is bounded by the period too
+    v[0].budget_us = 2501u; // a fast task's budget is bounded by the period too
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_BUDGET);
     EXPECT_EQ(bad, 0u);
-    v[0].budget_us = 0u;  // ... but may be 0 (allowance: the whole period)
+    v[0].budget_us = 0u; // ... but may be 0 (allowance: the whole period)
     EXPECT_EQ(validate(v, 400u, &bad), MT_OK);
 }
 
@@ -151,7 +154,7 @@ TEST(SchedValidate, TaskFn)
     v[2].fn = nullptr;
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_FN);
     EXPECT_EQ(bad, 2u);
-    v[2].rate_mhz = 0u;  // several problems: the missing function is reported
+    v[2].rate_mhz = 0u; // several problems: the missing function is reported
     v[2].budget_us = 0u;
     EXPECT_EQ(validate(v, 400u, &bad), MT_E_TASK_FN);
 }
@@ -169,22 +172,22 @@ TEST(SchedValidate, FirstFaultyEntryIsReported)
 TEST(SchedValidate, CheckEntryPerEntry)
 {
     std::vector<mt_task_t> v = {
-        entry(0u, 0u, 0u),                   // 0 ok (fast)
-        entry(5u, 0u, 1u),                   // 1 fast with a rate
-        entry(MT_HZ(10), 3000u, 2u),         // 2 fast with a rate (checked before budget)
-        entry(0u, 3000u, 2u),                // 3 fast, budget over the period
-        entry(MT_HZ(10), 10u, 3u, nullptr),  // 4 no function
-        entry(0u, 10u, 3u),                  // 5 normal, rate 0
-        entry(MT_HZ(10), 0u, 3u),            // 6 normal, budget 0
-        entry(MT_HZ(10), 2501u, 3u),         // 7 normal, budget over the period
-        entry(MT_HZ(10), 10u, 9u),           // 8 ok
-        entry(MT_HZ(10), 10u, 8u),           // 9 priority below the previous one
-        entry(MT_HZ(401), 10u, 9u),          // 10 above the loop rate
-        entry(MT_HZ(10), 10u, 9u),           // 11 ok
+        entry(0u, 0u, 0u),                  // 0 ok (fast)
+        entry(5u, 0u, 1u),                  // 1 fast with a rate
+        entry(MT_HZ(10), 3000u, 2u),        // 2 fast with a rate (checked before budget)
+        entry(0u, 3000u, 2u),               // 3 fast, budget over the period
+        entry(MT_HZ(10), 10u, 3u, nullptr), // 4 no function
+        entry(0u, 10u, 3u),                 // 5 normal, rate 0
+        entry(MT_HZ(10), 0u, 3u),           // 6 normal, budget 0
+        entry(MT_HZ(10), 2501u, 3u),        // 7 normal, budget over the period
+        entry(MT_HZ(10), 10u, 9u),          // 8 ok
+        entry(MT_HZ(10), 10u, 8u),          // 9 priority below the previous one
+        entry(MT_HZ(401), 10u, 9u),         // 10 above the loop rate
+        entry(MT_HZ(10), 10u, 9u),          // 11 ok
     };
-    const mt_status_t want[] = {MT_OK, MT_E_TASK_RATE, MT_E_TASK_RATE, MT_E_TASK_BUDGET,
-                                MT_E_TASK_FN, MT_E_TASK_RATE, MT_E_TASK_BUDGET, MT_E_TASK_BUDGET,
-                                MT_OK, MT_E_TASK_ORDER, MT_E_TASK_RATE, MT_OK};
+    const mt_status_t want[] = {MT_OK,        MT_E_TASK_RATE,  MT_E_TASK_RATE,   MT_E_TASK_BUDGET,
+                                MT_E_TASK_FN, MT_E_TASK_RATE,  MT_E_TASK_BUDGET, MT_E_TASK_BUDGET,
+                                MT_OK,        MT_E_TASK_ORDER, MT_E_TASK_RATE,   MT_OK};
     ASSERT_EQ(v.size(), sizeof(want) / sizeof(want[0]));
     for (uint32_t i = 0; i < v.size(); ++i) {
         EXPECT_EQ(mt_sched_check_entry(v.data(), static_cast<uint32_t>(v.size()), i, 400u), want[i])
@@ -201,17 +204,20 @@ TEST(SchedInit, RejectedInitLeavesSchedulerUntouched)
     uint32_t bad = 0u;
 
     std::vector<mt_task_t> v = good_table();
-    EXPECT_EQ(mt_sched_init(s.get(), v.data(), static_cast<uint32_t>(v.size()), 49u, &bad), MT_E_LOOP_RATE);
+    EXPECT_EQ(mt_sched_init(s.get(), v.data(), static_cast<uint32_t>(v.size()), 49u, &bad),
+              MT_E_LOOP_RATE);
     EXPECT_EQ(std::memcmp(s.get(), ref.get(), sizeof(*s)), 0);
     EXPECT_EQ(mt_sched_init(s.get(), v.data(), 0u, 400u, &bad), MT_E_TASK_COUNT);
     EXPECT_EQ(std::memcmp(s.get(), ref.get(), sizeof(*s)), 0);
     v[3].priority = 1u;
-    EXPECT_EQ(mt_sched_init(s.get(), v.data(), static_cast<uint32_t>(v.size()), 400u, &bad), MT_E_TASK_RATE);
+    EXPECT_EQ(mt_sched_init(s.get(), v.data(), static_cast<uint32_t>(v.size()), 400u, &bad),
+              MT_E_TASK_RATE);
     EXPECT_EQ(bad, 3u);
     EXPECT_EQ(std::memcmp(s.get(), ref.get(), sizeof(*s)), 0);
     v = good_table();
     v[4].budget_us = 0u;
-    EXPECT_EQ(mt_sched_init(s.get(), v.data(), static_cast<uint32_t>(v.size()), 400u, &bad), MT_E_TASK_BUDGET);
+    EXPECT_EQ(mt_sched_init(s.get(), v.data(), static_cast<uint32_t>(v.size()), 400u, &bad),
+              MT_E_TASK_BUDGET);
     EXPECT_EQ(std::memcmp(s.get(), ref.get(), sizeof(*s)), 0);
 
     // an accepted table sets up a fresh scheduler
@@ -243,11 +249,11 @@ struct Ctx {
     Harness *h = nullptr;
     int index = -1;
     uint64_t cost_us = 0u;
-    std::function<uint64_t(uint64_t)> cost_of_run;  // overrides cost_us when set
-    std::function<void(Ctx &)> body;                 // extra work inside the task
-    std::vector<uint64_t> ticks;                     // tick of every run
-    int32_t crumb = 0;                               // breadcrumb seen inside
-    uint32_t avail_inside = 0u;                      // time_available_us at start
+    std::function<uint64_t(uint64_t)> cost_of_run; // overrides cost_us when set
+    std::function<void(Ctx &)> body;               // extra work inside the task
+    std::vector<uint64_t> ticks;                   // tick of every run
+    int32_t crumb = 0;                             // breadcrumb seen inside
+    uint32_t avail_inside = 0u;                    // time_available_us at start
 };
 
 struct Harness {
@@ -255,8 +261,8 @@ struct Harness {
     mt_posix_metronome_t m{};
     std::vector<mt_task_t> tasks;
     std::deque<Ctx> ctx;
-    std::vector<int> this_tick;  // task indices run in the last loop, in order
-    uint64_t late_us = 0u;       // sample delivered late by this much (eats the budget)
+    std::vector<int> this_tick; // task indices run in the last loop, in order
+    uint64_t late_us = 0u;      // sample delivered late by this much (eats the budget)
     int32_t crumb_in_wait = 0;
     uint32_t rate_hz = 0u;
     // when set: the sample time is read from a simulated hardware counter,
@@ -300,7 +306,10 @@ struct Harness {
         h->this_tick.clear();
         return sample;
     }
-    void loop() { mt_sched_loop_once(&s, wait, this); }
+    void loop()
+    {
+        mt_sched_loop_once(&s, wait, this);
+    }
     void loops(uint64_t n)
     {
         for (uint64_t k = 0; k < n; ++k) {
@@ -335,8 +344,9 @@ struct Harness {
     }
 };
 
-class SchedSim : public SimTime {
-protected:
+class SchedSim : public SimTime
+{
+  protected:
     std::unique_ptr<Harness> h = std::make_unique<Harness>();
 };
 
@@ -371,7 +381,7 @@ TEST_F(SchedSim, FiftyHzTaskAt400HzRunsEvery8Ticks)
 
 TEST_F(SchedSim, TenthOfAHertzTask)
 {
-    Ctx &slow = h->add(100u, 500u, 10u, 5u);  // 0.1 Hz
+    Ctx &slow = h->add(100u, 500u, 10u, 5u); // 0.1 Hz
     ASSERT_EQ(h->init(400u), MT_OK);
     EXPECT_EQ(h->s.st[0].interval, 4000u);
     h->loops(3999u);
@@ -399,7 +409,7 @@ TEST_F(SchedSim, S4IntervalAbove65535Ticks)
 
 TEST_F(SchedSim, S4IntervalAbove65535TicksAt2000Hz)
 {
-    Ctx &t = h->add(20u, 100u, 3u, 1u);  // 0.02 Hz at 2000 Hz: 100000 ticks
+    Ctx &t = h->add(20u, 100u, 3u, 1u); // 0.02 Hz at 2000 Hz: 100000 ticks
     ASSERT_EQ(h->init(2000u), MT_OK);
     EXPECT_EQ(h->s.st[0].interval, 100000u);
     h->loops(100000u);
@@ -408,11 +418,11 @@ TEST_F(SchedSim, S4IntervalAbove65535TicksAt2000Hz)
 
 TEST_F(SchedSim, IntervalIsFloorOfLoopRateOverTaskRate)
 {
-    Ctx &a = h->add(MT_HZ(150), 100u, 3u, 1u);   // 400/150 = 2.67 -> 2
-    Ctx &b = h->add(MT_HZ(400), 100u, 3u, 1u);   // 1
-    Ctx &c = h->add(MT_HZ(300), 100u, 3u, 1u);   // 1.33 -> 1
-    Ctx &d = h->add(MT_HZ(7), 100u, 3u, 1u);     // 57.1 -> 57
-    Ctx &e = h->add(333333u, 100u, 3u, 1u);      // 400/333.333 -> 1
+    Ctx &a = h->add(MT_HZ(150), 100u, 3u, 1u); // 400/150 = 2.67 -> 2
+    Ctx &b = h->add(MT_HZ(400), 100u, 3u, 1u); // 1
+    Ctx &c = h->add(MT_HZ(300), 100u, 3u, 1u); // 1.33 -> 1
+    Ctx &d = h->add(MT_HZ(7), 100u, 3u, 1u);   // 57.1 -> 57
+    Ctx &e = h->add(333333u, 100u, 3u, 1u);    // 400/333.333 -> 1
     ASSERT_EQ(h->init(400u), MT_OK);
     const uint32_t iv[] = {2u, 1u, 1u, 57u, 1u};
     for (uint32_t i = 0; i < 5u; ++i) {
@@ -447,25 +457,25 @@ TEST_F(SchedSim, S3LoopRateLatchedAtInit)
     h->loops(100u);
     EXPECT_EQ(h->s.loop_rate_hz, 50u);
     EXPECT_EQ(h->s.st[0].interval, 5u);
-    EXPECT_EQ(t.ticks.size(), 20u);  // 10 Hz in a 50 Hz loop
-    EXPECT_EQ(h->s.last_sample_us, t0 + 100u * 20000u);  // samples 20 ms apart
+    EXPECT_EQ(t.ticks.size(), 20u);                     // 10 Hz in a 50 Hz loop
+    EXPECT_EQ(h->s.last_sample_us, t0 + 100u * 20000u); // samples 20 ms apart
     EXPECT_EQ(h->loop_report().mean_us, 20000u);
 }
 
 TEST_F(SchedSim, FastTasksRunEveryTickEvenWhenBudgetExhausted)
 {
-    Ctx &hog = h->add(0u, 0u, 0u, 3000u);    // fast, longer than the period
-    Ctx &fast = h->add(0u, 100u, 2u, 10u);   // fast, runs after the budget is gone
+    Ctx &hog = h->add(0u, 0u, 0u, 3000u);  // fast, longer than the period
+    Ctx &fast = h->add(0u, 100u, 2u, 10u); // fast, runs after the budget is gone
     Ctx &norm = h->add(MT_HZ(400), 100u, 3u, 10u);
     ASSERT_EQ(h->init(400u), MT_OK);
     h->loops(100u);
     EXPECT_EQ(hog.ticks.size(), 100u);
     EXPECT_EQ(fast.ticks.size(), 100u);
-    EXPECT_EQ(norm.ticks.size(), 0u);  // never fits after the hog
+    EXPECT_EQ(norm.ticks.size(), 0u); // never fits after the hog
     const mt_task_report_t r = h->report(2u);
     EXPECT_EQ(r.budget_skips, 100u);
     EXPECT_EQ(r.pending, 100u);
-    EXPECT_EQ(h->report(0u).overruns, 100u);  // 3000 > allowance of one period
+    EXPECT_EQ(h->report(0u).overruns, 100u); // 3000 > allowance of one period
     EXPECT_EQ(h->report(1u).overruns, 0u);
 }
 
@@ -474,26 +484,26 @@ TEST_F(SchedSim, FastTasksRunWhenTheSampleArrivesLate)
     Ctx &fast = h->add(0u, 0u, 1u, 10u);
     Ctx &norm = h->add(MT_HZ(400), 100u, 3u, 10u);
     ASSERT_EQ(h->init(400u), MT_OK);
-    h->late_us = 2600u;  // no time left in the period at all
+    h->late_us = 2600u; // no time left in the period at all
     h->loops(10u);
     EXPECT_EQ(fast.ticks.size(), 10u);
-    EXPECT_EQ(fast.avail_inside, 2500u);  // budget 0: the allowance is the period
+    EXPECT_EQ(fast.avail_inside, 2500u); // budget 0: the allowance is the period
     EXPECT_TRUE(norm.ticks.empty());
     EXPECT_EQ(h->report(1u).budget_skips, 10u);
     h->late_us = 0u;
     h->loop();
     EXPECT_EQ(norm.ticks, (std::vector<uint64_t>{11u}));
-    EXPECT_EQ(h->report(1u).slips, 10u);          // 11 releases, one served
-    EXPECT_EQ(h->report(1u).not_achieved, 1u);    // 11 >= 4 intervals late
+    EXPECT_EQ(h->report(1u).slips, 10u);       // 11 releases, one served
+    EXPECT_EQ(h->report(1u).not_achieved, 1u); // 11 >= 4 intervals late
 }
 
 // ---- budget, overruns, slips ------------------------------------------------------------
 
 TEST_F(SchedSim, BudgetSkipStaysDueAndCheaperLaterTaskRuns)
 {
-    Ctx &a = h->add(MT_HZ(200), 2000u, 10u, 2000u);  // every 2nd tick, eats 2000 of 2500
-    Ctx &b = h->add(MT_HZ(400), 1000u, 20u, 100u);   // does not fit after a
-    Ctx &c = h->add(MT_HZ(400), 300u, 30u, 50u);     // fits after a
+    Ctx &a = h->add(MT_HZ(200), 2000u, 10u, 2000u); // every 2nd tick, eats 2000 of 2500
+    Ctx &b = h->add(MT_HZ(400), 1000u, 20u, 100u);  // does not fit after a
+    Ctx &c = h->add(MT_HZ(400), 300u, 30u, 50u);    // fits after a
     ASSERT_EQ(h->init(400u), MT_OK);
     for (uint64_t t = 1u; t <= 100u; ++t) {
         h->loop();
@@ -508,21 +518,21 @@ TEST_F(SchedSim, BudgetSkipStaysDueAndCheaperLaterTaskRuns)
     EXPECT_EQ(c.ticks.size(), 100u);
     const mt_task_report_t rb = h->report(1u);
     EXPECT_EQ(rb.budget_skips, 50u);
-    EXPECT_EQ(rb.slips, 49u);    // every skipped release (the one at tick 100 is pending)
+    EXPECT_EQ(rb.slips, 49u); // every skipped release (the one at tick 100 is pending)
     EXPECT_EQ(rb.pending, 1u);
     EXPECT_EQ(rb.runs + rb.slips + rb.pending, 100u);
     EXPECT_EQ(rb.not_achieved, 0u);
     EXPECT_EQ(rb.overruns, 0u);
-    EXPECT_EQ(h->report(0u).overruns, 0u);  // taking exactly the budget is not an overrun
+    EXPECT_EQ(h->report(0u).overruns, 0u); // taking exactly the budget is not an overrun
     EXPECT_EQ(h->report(2u).budget_skips, 0u);
 }
 
 // S-1 regression: ArduPilot counted slips in the overrun counter.
 TEST_F(SchedSim, S1OverrunsAndSlipsAreSeparateCounters)
 {
-    h->add(MT_HZ(200), 2000u, 10u, 2000u);            // crowds out the next task every 2nd tick
+    h->add(MT_HZ(200), 2000u, 10u, 2000u); // crowds out the next task every 2nd tick
     Ctx &slipper = h->add(MT_HZ(400), 1000u, 20u, 100u);
-    Ctx &overrunner = h->add(MT_HZ(400), 100u, 30u, 150u);  // always 50 us over
+    Ctx &overrunner = h->add(MT_HZ(400), 100u, 30u, 150u); // always 50 us over
     ASSERT_EQ(h->init(400u), MT_OK);
     h->loops(100u);
     const mt_task_report_t rs = h->report(1u);
@@ -542,11 +552,11 @@ TEST_F(SchedSim, SlipsExactAfterKIntervals)
     for (uint64_t k = 1u; k <= 7u; ++k) {
         mt_posix_sim_enable(mt_test::kSimStartUs);
         h = std::make_unique<Harness>();
-        Ctx &t = h->add(MT_HZ(50), 1000u, 3u, 10u);  // interval 8 at 400 Hz
+        Ctx &t = h->add(MT_HZ(50), 1000u, 3u, 10u); // interval 8 at 400 Hz
         ASSERT_EQ(h->init(400u), MT_OK);
         h->loops(8u);
         ASSERT_EQ(t.ticks, (std::vector<uint64_t>{8u}));
-        h->late_us = 3000u;  // blocked: no budget left in these loops
+        h->late_us = 3000u; // blocked: no budget left in these loops
         h->loops(8u * k - 1u);
         EXPECT_EQ(t.ticks.size(), 1u);
         EXPECT_EQ(h->report(0u).pending, k - 1u);
@@ -559,7 +569,7 @@ TEST_F(SchedSim, SlipsExactAfterKIntervals)
         EXPECT_EQ(r.not_achieved, k >= 4u ? 1u : 0u) << "k " << k;
         EXPECT_EQ(r.budget_skips, 8u * (k - 1u)) << "k " << k;
         EXPECT_EQ(r.pending, 0u);
-        EXPECT_EQ(r.runs + r.slips + r.pending, k + 1u);  // releases at 8, 16, ..., 8 + 8k
+        EXPECT_EQ(r.runs + r.slips + r.pending, k + 1u); // releases at 8, 16, ..., 8 + 8k
         EXPECT_EQ(h->s.extra_us, k >= 4u ? 100u : 0u);
     }
 }
@@ -570,18 +580,18 @@ TEST_F(SchedSim, ExtraTimeRisesOnLateLoopsAndDecaysAfterCleanOnes)
 {
     Ctx &t = h->add(MT_HZ(400), 1000u, 3u, 10u);
     ASSERT_EQ(h->init(400u), MT_OK);
-    h->loop();  // tick 1
+    h->loop(); // tick 1
     h->late_us = 3000u;
-    h->loops(3u);  // ticks 2..4 blocked
+    h->loops(3u); // ticks 2..4 blocked
     h->late_us = 0u;
-    h->loop();  // tick 5: dt = 4 intervals: not achieved
+    h->loop(); // tick 5: dt = 4 intervals: not achieved
     EXPECT_EQ(t.ticks, (std::vector<uint64_t>{1u, 5u}));
     EXPECT_EQ(h->report(0u).not_achieved, 1u);
     EXPECT_EQ(h->s.extra_us, 100u);
     EXPECT_EQ(h->loop_report().extra_us, 100u);
-    h->loops(50u);  // 50 clean loops: no change yet
+    h->loops(50u); // 50 clean loops: no change yet
     EXPECT_EQ(h->s.extra_us, 100u);
-    h->loop();  // the 51st
+    h->loop(); // the 51st
     EXPECT_EQ(h->s.extra_us, 50u);
     h->loops(50u);
     EXPECT_EQ(h->s.extra_us, 50u);
@@ -610,10 +620,10 @@ TEST_F(SchedSim, ExtraTimeStepsAndCap)
     for (uint32_t k = 1u; k <= 30u; ++k) {
         mt_sched_end_loop(&h->s, 0u);
     }
-    h->s.late_in_loop = 3u;  // a late loop (several late tasks: still one step)
+    h->s.late_in_loop = 3u; // a late loop (several late tasks: still one step)
     mt_sched_end_loop(&h->s, 0u);
     EXPECT_EQ(h->s.extra_us, 5000u);
-    for (uint32_t k = 1u; k <= 50u; ++k) {  // the clean count started again
+    for (uint32_t k = 1u; k <= 50u; ++k) { // the clean count started again
         mt_sched_end_loop(&h->s, 0u);
     }
     EXPECT_EQ(h->s.extra_us, 5000u);
@@ -626,10 +636,10 @@ TEST_F(SchedSim, ExtraTimeIsAddedToTheLoopBudget)
     Ctx &t = h->add(MT_HZ(400), 1000u, 3u, 10u);
     ASSERT_EQ(h->init(400u), MT_OK);
     h->s.extra_us = 1200u;
-    h->late_us = 2400u;  // 100 us of the period left, + 1200 extra: the 1000 us budget fits
+    h->late_us = 2400u; // 100 us of the period left, + 1200 extra: the 1000 us budget fits
     h->loop();
     EXPECT_EQ(t.ticks.size(), 1u);
-    h->s.extra_us = 800u;  // 900 us: it does not
+    h->s.extra_us = 800u; // 900 us: it does not
     h->loop();
     EXPECT_EQ(t.ticks.size(), 1u);
     EXPECT_EQ(h->report(0u).budget_skips, 1u);
@@ -659,7 +669,7 @@ TEST_F(SchedSim, S7LongTaskTimeNotTruncatedAndMeanGuarded)
     EXPECT_EQ(r.mean_us, 70000u);
     EXPECT_EQ(r.overruns, 3u);
     EXPECT_EQ(h->s.st[0].total_us, 210000u);
-    EXPECT_EQ(h->report(1u).mean_us, 0u);  // never ran: still guarded
+    EXPECT_EQ(h->report(1u).mean_us, 0u); // never ran: still guarded
 
     mt_sched_reset_stats(&h->s);
     r = h->report(0u);
@@ -685,14 +695,14 @@ TEST_F(SchedSim, MinMaxMeanOfVaryingRunTimes)
 TEST_F(SchedSim, LoopStatisticsFromSamples)
 {
     h->add(MT_HZ(1), 100u, 3u, 0u);
-    ASSERT_EQ(h->init(400u), MT_OK);  // period 2500, long loop > 3000
+    ASSERT_EQ(h->init(400u), MT_OK); // period 2500, long loop > 3000
     mt_sched_note_sample(&h->s, 1000000u);
-    EXPECT_EQ(h->s.loops, 0u);  // first sample: no loop yet
+    EXPECT_EQ(h->s.loops, 0u); // first sample: no loop yet
     EXPECT_EQ(h->s.loop_min_us, 0u);
     mt_sched_note_sample(&h->s, 1002500u);
     mt_sched_note_sample(&h->s, 1005000u);
-    mt_sched_note_sample(&h->s, 1009000u);  // 4000: long
-    mt_sched_note_sample(&h->s, 1011000u);  // 2000
+    mt_sched_note_sample(&h->s, 1009000u); // 4000: long
+    mt_sched_note_sample(&h->s, 1011000u); // 2000
     mt_loop_report_t lr = h->loop_report();
     EXPECT_EQ(lr.loops, 4u);
     EXPECT_EQ(lr.min_us, 2000u);
@@ -702,8 +712,8 @@ TEST_F(SchedSim, LoopStatisticsFromSamples)
     EXPECT_GE(lr.filtered_us, 2500u);
     EXPECT_LE(lr.filtered_us, 2600u);
     const uint32_t f = h->s.filtered_loop_q8;
-    mt_sched_note_sample(&h->s, 1011000u + 20000u);  // an outlier (> 1.2 periods + 10 ms)
-    EXPECT_EQ(h->s.filtered_loop_q8, f);               // kept out of the filter
+    mt_sched_note_sample(&h->s, 1011000u + 20000u); // an outlier (> 1.2 periods + 10 ms)
+    EXPECT_EQ(h->s.filtered_loop_q8, f);            // kept out of the filter
     lr = h->loop_report();
     EXPECT_EQ(lr.max_us, 20000u);
     EXPECT_EQ(lr.long_loops, 2u);
@@ -716,9 +726,9 @@ TEST_F(SchedSim, S8LoadIsZeroWhenSpareExceedsPeriod)
 {
     h->add(MT_HZ(400), 100u, 3u, 0u);
     ASSERT_EQ(h->init(400u), MT_OK);
-    EXPECT_EQ(mt_sched_load_permille(&h->s), 0u);  // before the first loop
+    EXPECT_EQ(mt_sched_load_permille(&h->s), 0u); // before the first loop
     h->s.extra_us = 5000u;
-    h->loops(40u);  // idle tasks, 7500 us spare per loop
+    h->loops(40u); // idle tasks, 7500 us spare per loop
     EXPECT_GT(h->s.extra_us, 0u);
     EXPECT_GE(h->s.spare_us / h->s.spare_ticks, 2500u);
     EXPECT_EQ(mt_sched_load_permille(&h->s), 0u);
@@ -752,13 +762,13 @@ TEST_F(SchedSim, LoadNearZeroAtIdle)
 
 TEST_F(SchedSim, LoadNearFullAtFullLoad)
 {
-    h->add(MT_HZ(400), 2500u, 3u, 2499u);  // uses all but 1 us of every period
+    h->add(MT_HZ(400), 2500u, 3u, 2499u); // uses all but 1 us of every period
     ASSERT_EQ(h->init(400u), MT_OK);
     h->loops(200u);
     const mt_loop_report_t lr = h->loop_report();
     EXPECT_GE(lr.load_permille, 995u);
     EXPECT_LE(lr.load_permille, 1000u);
-    EXPECT_EQ(lr.long_loops, 0u);  // busy, not late
+    EXPECT_EQ(lr.long_loops, 0u); // busy, not late
 }
 
 TEST_F(SchedSim, LoadHalf)
@@ -771,13 +781,13 @@ TEST_F(SchedSim, LoadHalf)
 
 TEST_F(SchedSim, LoadFullWhenOverloaded)
 {
-    h->add(MT_HZ(400), 2500u, 3u, 4000u);  // every loop overruns the period
+    h->add(MT_HZ(400), 2500u, 3u, 4000u); // every loop overruns the period
     ASSERT_EQ(h->init(400u), MT_OK);
     h->loops(200u);
     const mt_loop_report_t lr = h->loop_report();
     EXPECT_EQ(lr.load_permille, 1000u);
     EXPECT_GT(lr.long_loops, 0u);
-    EXPECT_GT(lr.filtered_us, 2500u * 100u / 95u);  // the filtered loop rate is below 95%
+    EXPECT_GT(lr.filtered_us, 2500u * 100u / 95u); // the filtered loop rate is below 95%
 }
 
 // ---- per-tick rules ----------------------------------------------------------------------------
@@ -790,7 +800,7 @@ TEST_F(SchedSim, SecondRunInTheSameTickRunsNothing)
     h->loop();
     ASSERT_EQ(fast.ticks.size(), 1u);
     ASSERT_EQ(norm.ticks.size(), 1u);
-    EXPECT_EQ(mt_sched_run(&h->s, 5000u), 5000u);  // the whole allowance comes back
+    EXPECT_EQ(mt_sched_run(&h->s, 5000u), 5000u); // the whole allowance comes back
     EXPECT_EQ(fast.ticks.size(), 1u);
     EXPECT_EQ(norm.ticks.size(), 1u);
     mt_sched_tick(&h->s);
@@ -810,7 +820,7 @@ TEST_F(SchedSim, RunReturnsTimeLeftSaturatingAtZero)
     mt_sched_tick(&h->s);
     EXPECT_EQ(mt_sched_run(&h->s, 1000u), 240u);
     mt_sched_tick(&h->s);
-    EXPECT_EQ(mt_sched_run(&h->s, 500u), 0u);  // the fast task alone exceeds it
+    EXPECT_EQ(mt_sched_run(&h->s, 500u), 0u); // the fast task alone exceeds it
     EXPECT_EQ(h->report(1u).budget_skips, 1u);
 }
 
@@ -828,7 +838,7 @@ TEST_F(SchedSim, BreadcrumbsInTaskIdleAndWaitingForSample)
     EXPECT_EQ(b.crumb, 1);
     EXPECT_EQ(c.crumb, 2);
     EXPECT_EQ(h->s.current, MT_SCHED_IDLE);
-    EXPECT_EQ(mt_sched_time_available_us(&h->s), 0u);  // idle: no allowance
+    EXPECT_EQ(mt_sched_time_available_us(&h->s), 0u); // idle: no allowance
 }
 
 TEST_F(SchedSim, TimeAvailableInsideATask)
@@ -849,7 +859,7 @@ TEST_F(SchedSim, TimeAvailableInsideATask)
     ASSERT_EQ(h->init(400u), MT_OK);
     h->loop();
     EXPECT_EQ(seen, (std::vector<uint32_t>{1000u, 700u, 1u, 0u, 0u}));
-    EXPECT_EQ(h->report(0u).overruns, 1u);  // 1500 us against 1000
+    EXPECT_EQ(h->report(0u).overruns, 1u); // 1500 us against 1000
 }
 
 TEST_F(SchedSim, ResetStatsKeepsTheDueState)
@@ -876,11 +886,11 @@ TEST_F(SchedSim, ResetStatsKeepsTheDueState)
     EXPECT_EQ(lr.min_us, 0u);
     EXPECT_EQ(lr.max_us, 0u);
     EXPECT_EQ(lr.long_loops, 0u);
-    EXPECT_EQ(lr.ticks, 20u);  // not a statistic
+    EXPECT_EQ(lr.ticks, 20u); // not a statistic
     EXPECT_EQ(h->s.st[0].last_run, 16u);
     EXPECT_EQ(h->s.st[0].interval, 8u);
     h->loops(4u);
-    EXPECT_EQ(t.ticks.back(), 24u);  // the schedule goes on from the last run
+    EXPECT_EQ(t.ticks.back(), 24u); // the schedule goes on from the last run
     EXPECT_EQ(h->report(0u).runs, 1u);
     EXPECT_EQ(h->report(0u).min_us, 10u);
 }
@@ -1011,30 +1021,30 @@ void run_on_counter(Harness &hh, HwCounter &hw, uint32_t rate, uint64_t loops, u
     EXPECT_EQ(hh.clock_mismatches, 0u) << "extended counter disagrees with the true time";
     const mt_loop_report_t lr = hh.loop_report();
     EXPECT_EQ(lr.loops, loops - 1u);
-    EXPECT_EQ(lr.min_us, period);  // a wrong extension shows up as a short or long loop
+    EXPECT_EQ(lr.min_us, period); // a wrong extension shows up as a short or long loop
     EXPECT_EQ(lr.max_us, period);
     EXPECT_EQ(lr.long_loops, 0u);
     EXPECT_EQ(fast.ticks.size(), loops);
     EXPECT_EQ(t50.ticks.size(), loops / (rate / 50u));
-    EXPECT_EQ(hh.report(1u).budget_skips, 0u);  // no phantom elapsed time ate a budget
+    EXPECT_EQ(hh.report(1u).budget_skips, 0u); // no phantom elapsed time ate a budget
     EXPECT_EQ(hh.report(1u).slips, 0u);
 }
 
 TEST_F(SchedSim, HardwareCounterWrap16BitAt1MHz)
 {
-    HwCounter hw{0xFFFFu, 1u};  // wraps every 65.536 ms
+    HwCounter hw{0xFFFFu, 1u}; // wraps every 65.536 ms
     run_on_counter(*h, hw, 400u, 40000u, 1500u);
 }
 
 TEST_F(SchedSim, HardwareCounterWrap32BitAt168MHz)
 {
-    HwCounter hw{0xFFFFFFFFu, 168u};  // wraps every 25.6 s
+    HwCounter hw{0xFFFFFFFFu, 168u}; // wraps every 25.6 s
     run_on_counter(*h, hw, 400u, 40000u, 3u);
 }
 
 TEST_F(SchedSim, HardwareCounterWrapOddMaximum)
 {
-    HwCounter hw{999u, 1u};  // counts 0..999 us: wraps every millisecond
+    HwCounter hw{999u, 1u}; // counts 0..999 us: wraps every millisecond
     run_on_counter(*h, hw, 2000u, 20000u, 9000u);
 }
 
@@ -1054,8 +1064,8 @@ uint64_t cost_for(uint32_t task, uint64_t run, uint32_t budget, uint32_t period)
     Rng r((static_cast<uint64_t>(task) << 40) ^ (run * 0x9E3779B97F4A7C15ull) ^ 0x1234u);
     const uint32_t lim = (budget == 0u) ? period / 4u : budget;
     switch (r.below(8u)) {
-    case 0: return lim + r.below(lim / 2u + 1u);  // overrun
-    case 1: return lim;                            // exactly the allowance
+    case 0: return lim + r.below(lim / 2u + 1u); // overrun
+    case 1: return lim;                          // exactly the allowance
     default: return r.below(lim + 1u);
     }
 }
@@ -1085,7 +1095,9 @@ void differential(uint32_t rate, uint64_t seed, uint64_t ticks)
         }
         Ctx &c = h->add(rate_mhz, budget, prio, 0u);
         const uint32_t idx = k;
-        c.cost_of_run = [idx, budget, period](uint64_t run) { return cost_for(idx, run, budget, period); };
+        c.cost_of_run = [idx, budget, period](uint64_t run) {
+            return cost_for(idx, run, budget, period);
+        };
         model.push_back(ModelTask{fast, fast ? 1u : (rate * 1000u) / rate_mhz, budget});
     }
     ASSERT_EQ(h->init(rate), MT_OK);
@@ -1206,10 +1218,10 @@ TEST_F(SchedSim, MetronomeKeepsAbsoluteDeadlines)
     EXPECT_EQ(t1, mt_test::kSimStartUs + 2500u);
     EXPECT_EQ(mt_port_now_us(), t1);
     mt_posix_sim_advance(1000u);
-    EXPECT_EQ(mt_posix_metronome_wait(&m), t1 + 2500u);  // no drift from the work done
-    mt_posix_sim_advance(2600u);                         // a late loop
-    EXPECT_EQ(mt_posix_metronome_wait(&m), t1 + 7500u);  // skips to the next boundary
-    mt_posix_sim_advance(9000u);                          // several periods late
+    EXPECT_EQ(mt_posix_metronome_wait(&m), t1 + 2500u); // no drift from the work done
+    mt_posix_sim_advance(2600u);                        // a late loop
+    EXPECT_EQ(mt_posix_metronome_wait(&m), t1 + 7500u); // skips to the next boundary
+    mt_posix_sim_advance(9000u);                        // several periods late
     EXPECT_EQ(mt_posix_metronome_wait(&m), t1 + 17500u);
     EXPECT_EQ(m.samples, 4u);
 }
@@ -1225,4 +1237,4 @@ TEST_F(SchedSim, MetronomeLoopEndingOnTheBoundaryGetsThatSample)
     EXPECT_EQ(mt_posix_metronome_wait(&m), t1 + 2500u);
 }
 
-}  // namespace
+} // namespace

@@ -8,7 +8,8 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::RealTime;
 using mt_test::sem_has_waiter;
@@ -74,7 +75,7 @@ TEST_F(SemSim, SignalThenWait)
     mt_sem_signal(&s);
     EXPECT_EQ(s.token, 1u);
     const uint64_t t0 = mt_port_now_us();
-    EXPECT_EQ(mt_sem_wait(&s, 1000u), MT_OK);  // token present: no wait
+    EXPECT_EQ(mt_sem_wait(&s, 1000u), MT_OK); // token present: no wait
     EXPECT_EQ(mt_port_now_us(), t0);
     EXPECT_EQ(s.token, 0u);
     EXPECT_EQ(mt_sem_wait(&s, 0u), MT_E_TIMEOUT);
@@ -89,9 +90,9 @@ TEST_F(SemSim, DoubleSignalLeavesOneTokenAndCountsTheMerge)
     EXPECT_EQ(s.token, 1u);
     EXPECT_EQ(s.merged, 1u);
     EXPECT_EQ(mt_sem_wait(&s, 0u), MT_OK);
-    EXPECT_EQ(mt_sem_wait(&s, 0u), MT_E_TIMEOUT);  // one token, not two
+    EXPECT_EQ(mt_sem_wait(&s, 0u), MT_E_TIMEOUT); // one token, not two
 
-    mt_sem_init(&s, true);  // an initial token merges too
+    mt_sem_init(&s, true); // an initial token merges too
     mt_sem_signal_isr(&s);
     EXPECT_EQ(s.merged, 1u);
     EXPECT_EQ(s.token, 1u);
@@ -116,7 +117,7 @@ TEST_F(SemSim, TimeoutAdvancesSimulatedTimeByTheTimeout)
     const uint64_t t0 = mt_port_now_us();
     EXPECT_EQ(mt_sem_wait(&s, 2500u), MT_E_TIMEOUT);
     EXPECT_EQ(mt_port_now_us(), t0 + 2500u);
-    EXPECT_EQ(s.waiter, nullptr);  // the port cleared the reference
+    EXPECT_EQ(s.waiter, nullptr); // the port cleared the reference
     EXPECT_EQ(s.token, 0u);
 }
 
@@ -138,7 +139,7 @@ TEST_F(SemSim, TimedOutWaitConsumesNoToken)
     mt_sem_init(&s, false);
     EXPECT_EQ(mt_sem_wait(&s, 1000u), MT_E_TIMEOUT);
     mt_sem_signal(&s);
-    EXPECT_EQ(s.token, 1u);  // the signal after the timeout left the token
+    EXPECT_EQ(s.token, 1u); // the signal after the timeout left the token
     EXPECT_EQ(s.merged, 0u);
     EXPECT_EQ(mt_sem_wait(&s, 0u), MT_OK);
 }
@@ -196,25 +197,25 @@ TEST_F(SemReal, SecondConcurrentWaiterIsBusy)
     std::thread waiter([&] { first = mt_sem_wait(&s, MT_WAIT_FOREVER); });
     const bool parked = wait_until([&] { return sem_has_waiter(&s); });
     EXPECT_TRUE(parked);
-    if (!parked) {  // fail without hanging
+    if (!parked) { // fail without hanging
         mt_sem_signal(&s);
         waiter.join();
         return;
     }
 
-    EXPECT_EQ(mt_sem_wait(&s, 0u), MT_E_BUSY);       // this thread, polling
-    EXPECT_EQ(mt_sem_wait(&s, 100000u), MT_E_BUSY);  // this thread, with a timeout
+    EXPECT_EQ(mt_sem_wait(&s, 0u), MT_E_BUSY);      // this thread, polling
+    EXPECT_EQ(mt_sem_wait(&s, 100000u), MT_E_BUSY); // this thread, with a timeout
     std::atomic<int> second{-1};
     std::thread other([&] { second = mt_sem_wait(&s, MT_WAIT_FOREVER); });
     other.join();
-    EXPECT_EQ(second.load(), MT_E_BUSY);  // another thread
-    EXPECT_EQ(first.load(), -1);          // the first waiter is still parked
+    EXPECT_EQ(second.load(), MT_E_BUSY); // another thread
+    EXPECT_EQ(first.load(), -1);         // the first waiter is still parked
 
     mt_sem_signal(&s);
     waiter.join();
     EXPECT_EQ(first.load(), MT_OK);
     const mt_sem_t snap = sem_snapshot(&s);
-    EXPECT_EQ(snap.token, 0u);  // handed over directly, not left in the semaphore
+    EXPECT_EQ(snap.token, 0u); // handed over directly, not left in the semaphore
     EXPECT_EQ(snap.waiter, nullptr);
     EXPECT_EQ(snap.merged, 0u);
 }
@@ -225,7 +226,7 @@ void wake_blocked_waiter(void (*signal)(mt_sem_t *), uint64_t timeout_us)
     mt_sem_init(&s, false);
     std::thread signaller([&] {
         EXPECT_TRUE(wait_until([&] { return sem_has_waiter(&s); }));
-        signal(&s);  // signal even on failure: the test fails, it does not hang
+        signal(&s); // signal even on failure: the test fails, it does not hang
     });
     EXPECT_EQ(mt_sem_wait(&s, timeout_us), MT_OK);
     signaller.join();
@@ -261,4 +262,4 @@ TEST_F(SemReal, SignalBeforeWaitIsNotLost)
     EXPECT_EQ(mt_sem_wait(&s, MT_WAIT_FOREVER), MT_OK);
 }
 
-}  // namespace
+} // namespace

@@ -7,7 +7,8 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 struct Named {
     mt_status_t st;
@@ -80,4 +81,4 @@ TEST(Status, SentinelIsNotAStatus)
     EXPECT_STREQ(mt_status_str(MT_STATUS_COUNT), "MT_STATUS_?");
 }
 
-}  // namespace
+} // namespace

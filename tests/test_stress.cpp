@@ -10,18 +10,25 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::RealTime;
 using mt_test::Rng;
 
 // Turns a lost item or wake-up into a test failure instead of a hang.
-class Deadline {
-public:
-    Deadline() : end_(std::chrono::steady_clock::now() + std::chrono::seconds(60)) {}
-    bool passed() const { return std::chrono::steady_clock::now() > end_; }
+class Deadline
+{
+  public:
+    Deadline() : end_(std::chrono::steady_clock::now() + std::chrono::seconds(60))
+    {
+    }
+    bool passed() const
+    {
+        return std::chrono::steady_clock::now() > end_;
+    }
 
-private:
+  private:
     std::chrono::steady_clock::time_point end_;
 };
 
@@ -45,7 +52,7 @@ constexpr uint64_t kBytes = 1000000u;
 
 TEST_F(Stress, ByteRingWriteReadPeek)
 {
-    std::vector<uint8_t> mem(251u);  // not a power of two: the wrap moves around
+    std::vector<uint8_t> mem(251u); // not a power of two: the wrap moves around
     mt_bring_t r;
     ASSERT_EQ(mt_bring_init(&r, mem.data(), 251u), MT_OK);
     std::atomic<bool> give_up{false};
@@ -62,7 +69,7 @@ TEST_F(Stress, ByteRingWriteReadPeek)
             for (uint32_t k = 0; k < len; ++k) {
                 chunk[k] = stream_byte(produced + k);
             }
-            const uint32_t n = mt_bring_write(&r, chunk, len);  // partial writes allowed
+            const uint32_t n = mt_bring_write(&r, chunk, len); // partial writes allowed
             produced += n;
             if (n == 0u) {
                 relax(spins);
@@ -82,7 +89,7 @@ TEST_F(Stress, ByteRingWriteReadPeek)
     while (consumed < kBytes && !give_up.load(std::memory_order_relaxed)) {
         const uint32_t len = rng.range(1u, 300u);
         uint32_t n;
-        if (rng.below(3u) == 0u) {  // peek, then drop what was looked at
+        if (rng.below(3u) == 0u) { // peek, then drop what was looked at
             n = mt_bring_peek(&r, buf, len);
             if (n > 0u && mt_bring_advance(&r, n) != MT_OK) {
                 ++mismatches;
@@ -137,7 +144,7 @@ TEST_F(Stress, ByteRingReserveCommitPeekVec)
                 }
                 continue;
             }
-            const uint32_t commit = rng.range(1u, got);  // sometimes less than reserved
+            const uint32_t commit = rng.range(1u, got); // sometimes less than reserved
             uint32_t k = 0u;
             for (uint32_t s = 0; s < 2u; ++s) {
                 for (uint32_t j = 0; j < v[s].len; ++j, ++k) {
@@ -188,7 +195,7 @@ TEST_F(Stress, ByteRingReserveCommitPeekVec)
 
 struct Item {
     uint64_t seq;
-    uint64_t inv;  // ~seq: a torn copy shows up as a mismatch
+    uint64_t inv; // ~seq: a torn copy shows up as a mismatch
 };
 
 constexpr uint64_t kObjects = 1000000u;
@@ -229,7 +236,7 @@ TEST_F(Stress, ObjRingPushPop)
     uint32_t spins = 0u;
     while (next < kObjects && !give_up.load(std::memory_order_relaxed)) {
         Item it{};
-        if (rng.below(8u) == 0u) {  // peek must show what the next pop returns
+        if (rng.below(8u) == 0u) { // peek must show what the next pop returns
             Item pk{};
             if (mt_oring_peek(&r, &pk) == MT_OK) {
                 bad += (mt_oring_pop(&r, &it) != MT_OK || it.seq != pk.seq) ? 1u : 0u;
@@ -279,7 +286,7 @@ TEST_F(Stress, ObjRingDropOldestAccountsForEveryObject)
             default: ++other; break;
             }
             if (rng.below(64u) == 0u) {
-                std::this_thread::yield();  // let the consumer catch up now and then
+                std::this_thread::yield(); // let the consumer catch up now and then
             }
         }
         done.store(true, std::memory_order_release);
@@ -304,13 +311,13 @@ TEST_F(Stress, ObjRingDropOldestAccountsForEveryObject)
             ++received;
             if (rng.below(512u) == 0u) {
                 for (int k = 0; k < 16; ++k) {
-                    std::this_thread::yield();  // fall behind now and then: drops happen
+                    std::this_thread::yield(); // fall behind now and then: drops happen
                 }
             }
             continue;
         }
         if (finished) {
-            break;  // empty after `done`: everything published has been taken
+            break; // empty after `done`: everything published has been taken
         }
         relax(spins);
         if (dl.passed()) {
@@ -322,9 +329,9 @@ TEST_F(Stress, ObjRingDropOldestAccountsForEveryObject)
     EXPECT_EQ(bad, 0u);
     EXPECT_EQ(other, 0u);
     EXPECT_EQ(ok + dropped + full, n);
-    EXPECT_EQ(r.rejected, full);                   // every refusal counted by the producer
-    EXPECT_LE(r.lost, dropped);                    // a drop only after a drop-oldest push said so
-    EXPECT_EQ(received + r.lost + r.rejected, n);  // no object lost uncounted
+    EXPECT_EQ(r.rejected, full);                  // every refusal counted by the producer
+    EXPECT_LE(r.lost, dropped);                   // a drop only after a drop-oldest push said so
+    EXPECT_EQ(received + r.lost + r.rejected, n); // no object lost uncounted
     EXPECT_EQ(mt_oring_available(&r), 0u);
 }
 
@@ -333,7 +340,7 @@ TEST_F(Stress, ObjRingDropOldestAccountsForEveryObject)
 TEST_F(Stress, SemPingPongNoLostWakeUp)
 {
     const uint32_t rounds = 100000u;
-    const uint64_t limit_us = 30000000u;  // a lost wake-up fails here instead of hanging
+    const uint64_t limit_us = 30000000u; // a lost wake-up fails here instead of hanging
     mt_sem_t ping;
     mt_sem_t pong;
     mt_sem_init(&ping, false);
@@ -360,7 +367,7 @@ TEST_F(Stress, SemPingPongNoLostWakeUp)
         ++a_ok;
     }
     if (a_ok != rounds) {
-        mt_sem_signal(&ping);  // release b if it waits, then report
+        mt_sem_signal(&ping); // release b if it waits, then report
     }
     b.join();
     EXPECT_EQ(a_ok, rounds);
@@ -416,16 +423,22 @@ void isr_vs_timed_waiter(void (*signal)(mt_sem_t *), uint64_t seed)
     stop.store(true, std::memory_order_release);
     waiter.join();
     const mt_sem_t snap = mt_test::sem_snapshot(&s);
-    EXPECT_EQ(other, 0u);  // one waiter: never MT_E_BUSY
+    EXPECT_EQ(other, 0u); // one waiter: never MT_E_BUSY
     EXPECT_EQ(snap.waiter, nullptr);
     EXPECT_EQ(static_cast<uint64_t>(signals), ok + snap.merged + snap.token)
-        << "ok " << ok << " merged " << snap.merged << " token " << snap.token
-        << " timeouts " << timeouts;
+        << "ok " << ok << " merged " << snap.merged << " token " << snap.token << " timeouts "
+        << timeouts;
     EXPECT_GT(ok, 0u);
 }
 
-TEST_F(Stress, SemIsrSignalsVersusTimedWaiter) { isr_vs_timed_waiter(mt_sem_signal_isr, 21u); }
+TEST_F(Stress, SemIsrSignalsVersusTimedWaiter)
+{
+    isr_vs_timed_waiter(mt_sem_signal_isr, 21u);
+}
 
-TEST_F(Stress, SemTaskSignalsVersusTimedWaiter) { isr_vs_timed_waiter(mt_sem_signal, 31u); }
+TEST_F(Stress, SemTaskSignalsVersusTimedWaiter)
+{
+    isr_vs_timed_waiter(mt_sem_signal, 31u);
+}
 
-}  // namespace
+} // namespace

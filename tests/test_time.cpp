@@ -6,7 +6,8 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::Rng;
 using u128 = unsigned __int128;
@@ -14,8 +15,8 @@ using u128 = unsigned __int128;
 TEST(TimeExtInit, Statuses)
 {
     mt_time_ext_t t;
-    EXPECT_EQ(mt_time_ext_init(&t, 0u, 0u), MT_E_INVALID);          // hw_max 0
-    EXPECT_EQ(mt_time_ext_init(&t, 999u, 1000u), MT_E_INVALID);     // now > max
+    EXPECT_EQ(mt_time_ext_init(&t, 0u, 0u), MT_E_INVALID);      // hw_max 0
+    EXPECT_EQ(mt_time_ext_init(&t, 999u, 1000u), MT_E_INVALID); // now > max
     EXPECT_EQ(mt_time_ext_init(&t, 0xFFFFu, 0x10000u), MT_E_INVALID);
     EXPECT_EQ(mt_time_ext_init(&t, 0u, 5u), MT_E_INVALID);
 
@@ -24,7 +25,7 @@ TEST(TimeExtInit, Statuses)
     EXPECT_EQ(t.last_hw, 0x1234u);
     EXPECT_EQ(t.hw_max, 0xFFFFu);
 
-    ASSERT_EQ(mt_time_ext_init(&t, 1u, 1u), MT_OK);  // smallest counter, at its max
+    ASSERT_EQ(mt_time_ext_init(&t, 1u, 1u), MT_OK); // smallest counter, at its max
     ASSERT_EQ(mt_time_ext_init(&t, 0xFFFFFFFFu, 0xFFFFFFFFu), MT_OK);
     EXPECT_EQ(t.last_hw, 0xFFFFFFFFu);
 }
@@ -46,7 +47,7 @@ TEST(TimeExtend, NoWrap)
 {
     mt_time_ext_t t;
     ASSERT_EQ(mt_time_ext_init(&t, 0xFFFFu, 100u), MT_OK);
-    EXPECT_EQ(mt_time_extend(&t, 100u), 0u);  // no progress
+    EXPECT_EQ(mt_time_extend(&t, 100u), 0u); // no progress
     EXPECT_EQ(mt_time_extend(&t, 150u), 50u);
     EXPECT_EQ(mt_time_extend(&t, 0xFFFFu), 0xFFFFu - 100u);
     EXPECT_EQ(t.last_hw, 0xFFFFu);
@@ -56,16 +57,17 @@ TEST(TimeExtend, SingleWrap16And32Bit)
 {
     mt_time_ext_t t;
     ASSERT_EQ(mt_time_ext_init(&t, 0xFFFFu, 0xFFF0u), MT_OK);
-    EXPECT_EQ(mt_time_extend(&t, 0x0010u), 0x20u);  // 0xFFF0 -> 0xFFFF -> 0 -> 0x10
-    EXPECT_EQ(mt_time_extend(&t, 0x000Fu), 0x20u + 0xFFFFu);  // a reading just below: almost a full period
+    EXPECT_EQ(mt_time_extend(&t, 0x0010u), 0x20u); // 0xFFF0 -> 0xFFFF -> 0 -> 0x10
+    EXPECT_EQ(mt_time_extend(&t, 0x000Fu),
+              0x20u + 0xFFFFu); // a reading just below: almost a full period
 
     ASSERT_EQ(mt_time_ext_init(&t, 0xFFFFFFFFu, 0xFFFFFFFEu), MT_OK);
     EXPECT_EQ(mt_time_extend(&t, 1u), 3u);
-    EXPECT_EQ(mt_time_extend(&t, 0u), 3u + 0xFFFFFFFFull);  // full period minus one tick
+    EXPECT_EQ(mt_time_extend(&t, 0u), 3u + 0xFFFFFFFFull); // full period minus one tick
     EXPECT_EQ(mt_time_extend(&t, 0xFFFFFFFFu), 3u + 0xFFFFFFFFull + 0xFFFFFFFFull);
     EXPECT_EQ(mt_time_extend(&t, 0u), 3u + 2u * 0xFFFFFFFFull + 1u);
 
-    ASSERT_EQ(mt_time_ext_init(&t, 999u, 998u), MT_OK);  // odd maximum (0..999)
+    ASSERT_EQ(mt_time_ext_init(&t, 999u, 998u), MT_OK); // odd maximum (0..999)
     EXPECT_EQ(mt_time_extend(&t, 999u), 1u);
     EXPECT_EQ(mt_time_extend(&t, 0u), 2u);
     EXPECT_EQ(mt_time_extend(&t, 998u), 1000u);
@@ -73,8 +75,7 @@ TEST(TimeExtend, SingleWrap16And32Bit)
 
 // Drive a simulated counter of period hw_max + 1 forward in random steps of less
 // than one period (the port's calling rule) and compare with the true count.
-void many_wraps(uint32_t hw_max, uint32_t start, uint64_t seed, uint32_t steps,
-                uint64_t min_wraps)
+void many_wraps(uint32_t hw_max, uint32_t start, uint64_t seed, uint32_t steps, uint64_t min_wraps)
 {
     mt_time_ext_t t;
     const uint64_t period = static_cast<uint64_t>(hw_max) + 1u;
@@ -88,7 +89,7 @@ void many_wraps(uint32_t hw_max, uint32_t start, uint64_t seed, uint32_t steps,
         uint64_t step;
         switch (rng.below(4u)) {
         case 0: step = 0u; break;
-        case 1: step = period - 1u; break;  // the longest legal step
+        case 1: step = period - 1u; break; // the longest legal step
         case 2: step = rng.next() % period; break;
         default: step = rng.next() % (period / 16u + 1u); break;
         }
@@ -106,9 +107,18 @@ void many_wraps(uint32_t hw_max, uint32_t start, uint64_t seed, uint32_t steps,
     EXPECT_GE(wraps, min_wraps) << "the run must cross the wrap point many times";
 }
 
-TEST(TimeExtend, ManyWraps16Bit) { many_wraps(0xFFFFu, 0u, 1u, 20000u, 1000u); }
-TEST(TimeExtend, ManyWraps32Bit) { many_wraps(0xFFFFFFFFu, 0xFFFFFF00u, 2u, 20000u, 1000u); }
-TEST(TimeExtend, ManyWrapsOddMax999) { many_wraps(999u, 500u, 3u, 20000u, 1000u); }
+TEST(TimeExtend, ManyWraps16Bit)
+{
+    many_wraps(0xFFFFu, 0u, 1u, 20000u, 1000u);
+}
+TEST(TimeExtend, ManyWraps32Bit)
+{
+    many_wraps(0xFFFFFFFFu, 0xFFFFFF00u, 2u, 20000u, 1000u);
+}
+TEST(TimeExtend, ManyWrapsOddMax999)
+{
+    many_wraps(999u, 500u, 3u, 20000u, 1000u);
+}
 TEST(TimeExtend, ManyWrapsTinyCounters)
 {
     many_wraps(1u, 0u, 4u, 5000u, 500u);
@@ -121,18 +131,18 @@ TEST(TimeExtend, SaturatesAtUint64Max)
     mt_time_ext_t t;
     ASSERT_EQ(mt_time_ext_init(&t, 0xFFFFu, 0u), MT_OK);
     t.ticks = UINT64_MAX - 10u;
-    EXPECT_EQ(mt_time_extend(&t, 10u), UINT64_MAX);  // lands exactly on the maximum
+    EXPECT_EQ(mt_time_extend(&t, 10u), UINT64_MAX); // lands exactly on the maximum
     EXPECT_EQ(mt_time_extend(&t, 10u), UINT64_MAX);
-    EXPECT_EQ(mt_time_extend(&t, 0xFFFFu), UINT64_MAX);  // would pass it: saturates
-    EXPECT_EQ(mt_time_extend(&t, 3u), UINT64_MAX);       // and a wrap on top of that
+    EXPECT_EQ(mt_time_extend(&t, 0xFFFFu), UINT64_MAX); // would pass it: saturates
+    EXPECT_EQ(mt_time_extend(&t, 3u), UINT64_MAX);      // and a wrap on top of that
     EXPECT_EQ(t.last_hw, 3u);
 
     ASSERT_EQ(mt_time_ext_init(&t, 0xFFFFFFFFu, 0xFFFFFFF0u), MT_OK);
     t.ticks = UINT64_MAX - 0x1Fu;
-    EXPECT_EQ(mt_time_extend(&t, 0x0Fu), UINT64_MAX - 0x1Fu + 0x1Fu);  // exact: 0x1F ticks
+    EXPECT_EQ(mt_time_extend(&t, 0x0Fu), UINT64_MAX - 0x1Fu + 0x1Fu); // exact: 0x1F ticks
     t.ticks = UINT64_MAX - 0x1Eu;
     t.last_hw = 0xFFFFFFF0u;
-    EXPECT_EQ(mt_time_extend(&t, 0x0Fu), UINT64_MAX);  // one tick too many: saturated
+    EXPECT_EQ(mt_time_extend(&t, 0x0Fu), UINT64_MAX); // one tick too many: saturated
 }
 
 uint64_t ref_ticks_to_us(uint64_t ticks, uint32_t hz)
@@ -143,12 +153,24 @@ uint64_t ref_ticks_to_us(uint64_t ticks, uint32_t hz)
 
 TEST(TimeTicksToUs, ExactAgainst128BitArithmetic)
 {
-    const uint32_t rates[] = {1u, 2u, 3u, 7u, 999u, 1000u, 32768u, 1000000u, 1000001u,
-                              8000000u, 168000000u, 0x7FFFFFFFu, 0xFFFFFFFFu};
-    const uint64_t ticks[] = {0u, 1u, 2u, 999u, 1000u, 1000001u, 0xFFFFFFFFull,
-                              0x100000000ull, 18446744073709ull, 18446744073709551ull,
-                              18446744073709552ull, UINT64_MAX / 1000000u,
-                              UINT64_MAX / 1000000u + 1u, UINT64_MAX - 1u, UINT64_MAX};
+    const uint32_t rates[] = {1u,         2u,          3u,         7u,       999u,
+                              1000u,      32768u,      1000000u,   1000001u, 8000000u,
+                              168000000u, 0x7FFFFFFFu, 0xFFFFFFFFu};
+    const uint64_t ticks[] = {0u,
+                              1u,
+                              2u,
+                              999u,
+                              1000u,
+                              1000001u,
+                              0xFFFFFFFFull,
+                              0x100000000ull,
+                              18446744073709ull,
+                              18446744073709551ull,
+                              18446744073709552ull,
+                              UINT64_MAX / 1000000u,
+                              UINT64_MAX / 1000000u + 1u,
+                              UINT64_MAX - 1u,
+                              UINT64_MAX};
     for (uint32_t hz : rates) {
         for (uint64_t tk : ticks) {
             EXPECT_EQ(mt_time_ticks_to_us(tk, hz), ref_ticks_to_us(tk, hz))
@@ -166,7 +188,7 @@ TEST(TimeTicksToUs, ExactAgainst128BitArithmetic)
 
 TEST(TimeTicksToUs, RoundsDownAndSaturates)
 {
-    EXPECT_EQ(mt_time_ticks_to_us(1u, 3u), 333333u);            // 333333.33 rounded down
+    EXPECT_EQ(mt_time_ticks_to_us(1u, 3u), 333333u); // 333333.33 rounded down
     EXPECT_EQ(mt_time_ticks_to_us(2u, 3u), 666666u);
     EXPECT_EQ(mt_time_ticks_to_us(1000u, 1000u), 1000000u);
     EXPECT_EQ(mt_time_ticks_to_us(1u, 1000000u), 1u);
@@ -181,7 +203,8 @@ TEST(TimeTicksToUs, RoundsDownAndSaturates)
     EXPECT_EQ(mt_time_ticks_to_us(UINT64_MAX, 1u), UINT64_MAX);
     EXPECT_EQ(mt_time_ticks_to_us(UINT64_MAX, 999999u), UINT64_MAX);
     // just below 1 MHz the result exceeds the tick count but may still fit
-    EXPECT_EQ(mt_time_ticks_to_us(UINT64_MAX / 2u, 999999u), ref_ticks_to_us(UINT64_MAX / 2u, 999999u));
+    EXPECT_EQ(mt_time_ticks_to_us(UINT64_MAX / 2u, 999999u),
+              ref_ticks_to_us(UINT64_MAX / 2u, 999999u));
 }
 
-}  // namespace
+} // namespace

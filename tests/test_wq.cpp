@@ -18,7 +18,8 @@
 
 #include "mt_test_util.h"
 
-namespace {
+namespace
+{
 
 using mt_test::kSimStartUs;
 using mt_test::RealTime;
@@ -27,15 +28,15 @@ using mt_test::SimTime;
 // What one run of a probe item does.
 struct Probe {
     int id = 0;
-    std::vector<int> *order = nullptr;  // run order, shared by the items of a test
+    std::vector<int> *order = nullptr; // run order, shared by the items of a test
     uint32_t runs = 0u;
-    uint32_t spend_us = 0u;             // simulated run time
-    uint32_t reschedule = 0u;           // times to schedule itself again from its run
+    uint32_t spend_us = 0u;   // simulated run time
+    uint32_t reschedule = 0u; // times to schedule itself again from its run
     mt_work_t *self = nullptr;
-    mt_work_t *other = nullptr;         // scheduled once from the first run
-    mt_wq_t *queue = nullptr;           // for the nested-runner test
-    mt_status_t nested = MT_OK;         // mt_wq_run_once from inside the run
-    mt_status_t self_status = MT_OK;    // status of the last self-schedule
+    mt_work_t *other = nullptr;      // scheduled once from the first run
+    mt_wq_t *queue = nullptr;        // for the nested-runner test
+    mt_status_t nested = MT_OK;      // mt_wq_run_once from inside the run
+    mt_status_t self_status = MT_OK; // status of the last self-schedule
 };
 
 void probe_run(void *arg)
@@ -62,7 +63,9 @@ void probe_run(void *arg)
     }
 }
 
-void noop(void *) {}
+void noop(void *)
+{
+}
 
 // A queue with n probe items attached (heap: mt_wq_t is a few kB).
 struct Rig {
@@ -71,8 +74,7 @@ struct Rig {
     std::vector<Probe> p;
     std::vector<int> order;
 
-    explicit Rig(uint32_t n, const char *name = "wq_test")
-        : w(n), p(n)
+    explicit Rig(uint32_t n, const char *name = "wq_test") : w(n), p(n)
     {
         mt_wq_init(q.get(), name, MT_PRIO_SPI, -1);
         for (uint32_t i = 0; i < n; ++i) {
@@ -83,8 +85,14 @@ struct Rig {
             EXPECT_EQ(mt_wq_attach(q.get(), &w[i]), MT_OK);
         }
     }
-    mt_wq_t *wq() { return q.get(); }
-    uint32_t run(uint32_t max = 1000u) { return mt_wq_run_pending(q.get(), max); }
+    mt_wq_t *wq()
+    {
+        return q.get();
+    }
+    uint32_t run(uint32_t max = 1000u)
+    {
+        return mt_wq_run_pending(q.get(), max);
+    }
     mt_work_report_t report(uint32_t i)
     {
         mt_work_report_t r;
@@ -203,7 +211,7 @@ TEST_F(WqSim, ScheduleRunsOnceInFifoOrder)
         EXPECT_EQ(mt_work_schedule(&r.w[2]), MT_OK);
         EXPECT_EQ(mt_work_schedule(&r.w[0]), MT_OK);
         EXPECT_EQ(mt_wq_run_once(r.wq()), MT_OK);
-        EXPECT_EQ(mt_work_schedule(&r.w[1]), MT_OK);  // ran already: queued again, at the end
+        EXPECT_EQ(mt_work_schedule(&r.w[1]), MT_OK); // ran already: queued again, at the end
         EXPECT_EQ(r.run(), 3u);
         EXPECT_EQ(r.order, (std::vector<int>{1, 2, 0, 1}));
     }
@@ -246,10 +254,10 @@ TEST_F(WqSim, ScheduleFromIsrAndLockHeldContexts)
 TEST_F(WqSim, NotifyCallbackSchedulesWithTheLockHeld)
 {
     Rig r(1u);
-    void (*notify)(void *) = mt_work_notify_i;  // the publish-hook shape
+    void (*notify)(void *) = mt_work_notify_i; // the publish-hook shape
     mt_port_lock();
     notify(&r.w[0]);
-    notify(&r.w[0]);  // merged, counted (the hook returns nothing)
+    notify(&r.w[0]); // merged, counted (the hook returns nothing)
     mt_port_unlock();
     EXPECT_EQ(r.report(0).queued, 1u);
     EXPECT_EQ(r.report(0).merged, 1u);
@@ -260,14 +268,14 @@ TEST_F(WqSim, NotifyCallbackSchedulesWithTheLockHeld)
 TEST_F(WqSim, ScheduleWhileRunningRunsOnceMore)
 {
     Rig r(2u);
-    r.p[0].reschedule = 2u;  // its run schedules itself twice (once per run)
-    r.p[0].other = &r.w[1];  // and item 1 once
+    r.p[0].reschedule = 2u; // its run schedules itself twice (once per run)
+    r.p[0].other = &r.w[1]; // and item 1 once
     EXPECT_EQ(mt_work_schedule(&r.w[0]), MT_OK);
     EXPECT_EQ(r.run(), 4u);
     // run 1 of item 0 queues 0 then 1; run 2 of 0 queues 0 behind 1
     EXPECT_EQ(r.order, (std::vector<int>{0, 0, 1, 0}));
     EXPECT_EQ(r.p[0].runs, 3u);
-    EXPECT_EQ(r.p[0].self_status, MT_OK);  // not a merge: it was running, not queued
+    EXPECT_EQ(r.p[0].self_status, MT_OK); // not a merge: it was running, not queued
     EXPECT_EQ(r.report(0).merged, 0u);
     EXPECT_EQ(r.p[1].runs, 1u);
 }
@@ -275,12 +283,12 @@ TEST_F(WqSim, ScheduleWhileRunningRunsOnceMore)
 TEST_F(WqSim, SecondRunnerIsRefusedAndCounted)
 {
     Rig r(2u);
-    r.p[0].queue = r.wq();  // item 0 calls mt_wq_run_once on its own queue
+    r.p[0].queue = r.wq(); // item 0 calls mt_wq_run_once on its own queue
     EXPECT_EQ(mt_work_schedule(&r.w[0]), MT_OK);
     EXPECT_EQ(mt_work_schedule(&r.w[1]), MT_OK);
     EXPECT_EQ(mt_wq_run_once(r.wq()), MT_OK);
     EXPECT_EQ(r.p[0].nested, MT_E_BUSY);
-    EXPECT_EQ(r.p[1].runs, 0u);  // not run inside item 0's run
+    EXPECT_EQ(r.p[1].runs, 0u); // not run inside item 0's run
     EXPECT_EQ(r.qreport().refused, 1u);
     EXPECT_EQ(r.run(), 1u);
     EXPECT_EQ(r.p[1].runs, 1u);
@@ -324,10 +332,10 @@ TEST_F(WqSim, DelayZeroFiresAtTheNextTickAndRearmReplaces)
     mt_work_schedule_delayed(&r.w[0], 0u);
     EXPECT_EQ(r.tick(t0), 1u);
     mt_work_schedule_delayed(&r.w[0], 1000u);
-    mt_work_schedule_delayed(&r.w[0], 3000u);  // replaces the first
+    mt_work_schedule_delayed(&r.w[0], 3000u); // replaces the first
     EXPECT_EQ(r.tick(t0 + 1000u), 0u);
     EXPECT_EQ(r.tick(t0 + 3000u), 1u);
-    EXPECT_EQ(r.report(0).merged, 1u);  // still queued from the first tick: merged
+    EXPECT_EQ(r.report(0).merged, 1u); // still queued from the first tick: merged
     EXPECT_EQ(r.run(), 1u);
 }
 
@@ -362,7 +370,7 @@ TEST_F(WqSim, IntervalCountsMissedPeriods)
     EXPECT_EQ(r.report(0).missed, 2u);
     EXPECT_EQ(r.qreport().missed, 2u);
     EXPECT_EQ(r.wq()->slot[0].deadline_us, t0 + 4000u);
-    EXPECT_EQ(r.report(0).merged, 1u);  // not run in between: the second activation merged
+    EXPECT_EQ(r.report(0).merged, 1u); // not run in between: the second activation merged
     EXPECT_EQ(r.run(), 1u);
     // periods: served (1 run) + merged (1) + missed (2) == 4 deadlines passed (t0..t0+3000)
     EXPECT_EQ(r.p[0].runs + r.report(0).merged + r.report(0).missed, 4u);
@@ -385,14 +393,14 @@ TEST_F(WqSim, CancelStopsTheTimerButNotAQueuedRun)
 {
     Rig r(1u);
     const uint64_t t0 = now_us();
-    EXPECT_EQ(mt_work_cancel(&r.w[0]), MT_E_STATE);  // nothing armed
+    EXPECT_EQ(mt_work_cancel(&r.w[0]), MT_E_STATE); // nothing armed
     EXPECT_EQ(mt_work_schedule_interval(&r.w[0], 1000u, 0u), MT_OK);
     EXPECT_EQ(r.tick(t0), 1u);
     EXPECT_EQ(mt_work_cancel(&r.w[0]), MT_OK);
     EXPECT_EQ(mt_work_cancel(&r.w[0]), MT_E_STATE);
     EXPECT_EQ(r.tick(t0 + 1000u), 0u);
     EXPECT_EQ(r.tick(t0 + 5000u), 0u);
-    EXPECT_EQ(r.run(), 1u);  // the activation before the cancel still runs
+    EXPECT_EQ(r.run(), 1u); // the activation before the cancel still runs
     mt_work_schedule_delayed(&r.w[0], 10u);
     mt_port_lock();
     EXPECT_EQ(mt_work_cancel_i(&r.w[0]), MT_OK);
@@ -409,13 +417,13 @@ TEST_F(WqSim, TimerProcDrivesTheQueueFromAProcSet)
     ASSERT_EQ(mt_proc_register(&timer_procs, mt_wq_timer_proc, r.wq()), MT_OK);
     EXPECT_EQ(mt_work_schedule_interval(&r.w[0], 2000u, 0u), MT_OK);
     mt_work_schedule_delayed(&r.w[1], 3000u);
-    for (int ms = 0; ms < 10; ++ms) {  // 10 ms of 1 kHz timer, the queue run after each
+    for (int ms = 0; ms < 10; ++ms) { // 10 ms of 1 kHz timer, the queue run after each
         EXPECT_EQ(mt_proc_dispatch(&timer_procs), MT_OK);
         r.run();
         mt_posix_sim_advance(1000u);
     }
-    EXPECT_EQ(r.p[0].runs, 5u);  // at 0, 2, 4, 6, 8 ms
-    EXPECT_EQ(r.p[1].runs, 1u);  // at 3 ms
+    EXPECT_EQ(r.p[0].runs, 5u); // at 0, 2, 4, 6, 8 ms
+    EXPECT_EQ(r.p[1].runs, 1u); // at 3 ms
     EXPECT_EQ(r.report(0).missed, 0u);
     EXPECT_EQ(r.report(0).merged, 0u);
 }
@@ -430,12 +438,12 @@ TEST_F(WqSim, RunWaitTimesOutWithoutARunAndLeavesNothingStale)
     EXPECT_EQ(mt_work_run_wait(&r.w[0], 2500u), MT_E_TIMEOUT);
     EXPECT_GE(now_us(), t0 + 2500u);
     EXPECT_EQ(r.wq()->slot[0].shot, MT_WQ_SHOT_NONE);
-    EXPECT_EQ(r.report(0).queued, 1u);  // the activation stays and runs later
-    EXPECT_EQ(mt_work_run_wait(&r.w[0], 0u), MT_E_TIMEOUT);  // 0: do not wait; merged
+    EXPECT_EQ(r.report(0).queued, 1u);                      // the activation stays and runs later
+    EXPECT_EQ(mt_work_run_wait(&r.w[0], 0u), MT_E_TIMEOUT); // 0: do not wait; merged
     EXPECT_EQ(r.report(0).merged, 1u);
     EXPECT_EQ(r.run(), 1u);
     EXPECT_EQ(r.p[0].runs, 1u);
-    EXPECT_EQ(r.wq()->slot[0].done.token, 0u);  // no completion token left behind
+    EXPECT_EQ(r.wq()->slot[0].done.token, 0u); // no completion token left behind
     EXPECT_EQ(r.wq()->slot[0].shot, MT_WQ_SHOT_NONE);
 }
 
@@ -446,7 +454,7 @@ TEST_F(WqThread, RunWaitReturnsAfterTheRunOnTheQueueThread)
     ASSERT_EQ(mt_posix_wq_start(&th, r.wq()), MT_OK);
     for (uint32_t k = 1; k <= 20u; ++k) {
         ASSERT_EQ(mt_work_run_wait(&r.w[0], 10000000u), MT_OK) << k;
-        EXPECT_EQ(r.p[0].runs, k);  // the run ended before the wait returned
+        EXPECT_EQ(r.p[0].runs, k); // the run ended before the wait returned
     }
     EXPECT_EQ(mt_work_run_wait(&r.w[0], MT_WAIT_FOREVER), MT_OK);
     mt_posix_wq_stop(&th);
@@ -456,7 +464,7 @@ TEST_F(WqThread, RunWaitReturnsAfterTheRunOnTheQueueThread)
 
 TEST_F(WqThread, SecondSingleShotWaiterIsBusy)
 {
-    Rig r(1u);  // no queue thread: the first waiter waits until its timeout
+    Rig r(1u); // no queue thread: the first waiter waits until its timeout
     std::atomic<int> first{-1};
     std::thread waiter([&] { first = mt_work_run_wait(&r.w[0], 3000000u); });
     ASSERT_TRUE(mt_test::wait_until([&] {
@@ -484,10 +492,10 @@ TEST_F(WqSim, StatisticsRunTimesIntervalsLatency)
     EXPECT_EQ(mt_work_schedule(&r.w[0]), MT_OK);
     mt_posix_sim_advance(700u);
     EXPECT_EQ(r.run(), 1u);
-    mt_posix_sim_advance(900u);  // now t0+1700
+    mt_posix_sim_advance(900u); // now t0+1700
     EXPECT_EQ(mt_work_schedule(&r.w[0]), MT_OK);
     EXPECT_EQ(r.run(), 1u);
-    mt_posix_sim_advance(1900u);  // now t0+3700
+    mt_posix_sim_advance(1900u); // now t0+3700
     EXPECT_EQ(mt_work_schedule(&r.w[0]), MT_OK);
     r.p[0].spend_us = 400u;
     EXPECT_EQ(r.run(), 1u);
@@ -497,11 +505,11 @@ TEST_F(WqSim, StatisticsRunTimesIntervalsLatency)
     EXPECT_EQ(a.starts, 3u);
     EXPECT_EQ(a.runs, 3u);
     EXPECT_EQ(a.max_run_us, 400u);
-    EXPECT_EQ(a.mean_run_us, 200u);  // (100 + 100 + 400) / 3
+    EXPECT_EQ(a.mean_run_us, 200u); // (100 + 100 + 400) / 3
     EXPECT_EQ(a.min_interval_us, 1000u);
     EXPECT_EQ(a.max_interval_us, 2000u);
     EXPECT_EQ(a.mean_interval_us, 1500u);
-    EXPECT_EQ(a.rate_mhz, 666666u);  // 10^9 / 1500
+    EXPECT_EQ(a.rate_mhz, 666666u); // 10^9 / 1500
     EXPECT_EQ(a.max_latency_us, 700u);
     EXPECT_EQ(a.running, 0u);
 
@@ -531,14 +539,15 @@ TEST_F(WqSim, ReportShowsRunningWhileTheItemRuns)
     static mt_work_t *self;
     self = &r.w[0];
     mt_work_t w;
-    mt_work_init(&w, [](void *) { mt_work_report(self, &inside); }, nullptr);
+    mt_work_init(
+        &w, [](void *) { mt_work_report(self, &inside); }, nullptr);
     ASSERT_EQ(mt_wq_attach(r.wq(), &w), MT_OK);
     self = &w;
     EXPECT_EQ(mt_work_schedule(&w), MT_OK);
     EXPECT_EQ(r.run(), 1u);
     EXPECT_EQ(inside.running, 1u);
     EXPECT_EQ(inside.starts, 1u);
-    EXPECT_EQ(inside.runs, 0u);  // completed runs: not yet
+    EXPECT_EQ(inside.runs, 0u); // completed runs: not yet
 }
 
 // ---------------------------------------------------------------- the queue thread
@@ -556,7 +565,7 @@ TEST_F(WqThread, QueueThreadRunsItemsAndStops)
         return q.depth == 0u && r.wq()->running == MT_WQ_NONE && q.runs + q.merged == 50u;
     }));
     mt_posix_wq_stop(&th);
-    EXPECT_EQ(mt_wq_serve_once(r.wq()), MT_E_STATE);  // the stop request stays
+    EXPECT_EQ(mt_wq_serve_once(r.wq()), MT_E_STATE); // the stop request stays
 }
 
 TEST_F(WqThread, SecondServingThreadIsBusy)
@@ -565,7 +574,7 @@ TEST_F(WqThread, SecondServingThreadIsBusy)
     mt_posix_wq_thread_t th;
     ASSERT_EQ(mt_posix_wq_start(&th, r.wq()), MT_OK);
     ASSERT_TRUE(mt_test::wait_until([&] { return mt_test::sem_has_waiter(&r.wq()->wake); }));
-    EXPECT_EQ(mt_wq_serve_once(r.wq()), MT_E_BUSY);  // the thread already waits on `wake`
+    EXPECT_EQ(mt_wq_serve_once(r.wq()), MT_E_BUSY); // the thread already waits on `wake`
     mt_posix_wq_stop(&th);
 }
 
@@ -640,7 +649,7 @@ TEST_F(WqThread, StressSchedulersIsrTimerAgainstQueueThread)
         }
     };
     std::vector<std::thread> ts;
-    for (uint32_t t = 0; t < 3u; ++t) {  // task-context schedulers
+    for (uint32_t t = 0; t < 3u; ++t) { // task-context schedulers
         ts.emplace_back([&, t] {
             mt_test::Rng rng(t + 11u);
             for (uint32_t k = 0; k < kPerThread; ++k) {
@@ -651,7 +660,7 @@ TEST_F(WqThread, StressSchedulersIsrTimerAgainstQueueThread)
             }
         });
     }
-    ts.emplace_back([&] {  // an "ISR": schedule_isr and the lock-held notify hook
+    ts.emplace_back([&] { // an "ISR": schedule_isr and the lock-held notify hook
         mt_test::Rng rng(99u);
         for (uint32_t k = 0; k < kPerThread; ++k) {
             mt_work_t *item = &w[rng.below(kItems)];
@@ -659,15 +668,17 @@ TEST_F(WqThread, StressSchedulersIsrTimerAgainstQueueThread)
                 count(mt_work_schedule_isr(item));
             } else {
                 mt_port_lock();
-                const bool was = (item->wq->where[item->slot] + MT_CFG_WQ_MAX_ITEMS -
-                                  item->wq->head) % MT_CFG_WQ_MAX_ITEMS < item->wq->count;
+                const bool was =
+                    (item->wq->where[item->slot] + MT_CFG_WQ_MAX_ITEMS - item->wq->head) %
+                        MT_CFG_WQ_MAX_ITEMS <
+                    item->wq->count;
                 mt_work_notify_i(item);
                 mt_port_unlock();
                 count(was ? MT_W_WQ_MERGED : MT_OK);
             }
         }
     });
-    ts.emplace_back([&] {  // a second runner racing the queue thread
+    ts.emplace_back([&] { // a second runner racing the queue thread
         for (uint32_t k = 0; k < kPerThread / 4u; ++k) {
             if (mt_wq_run_once(q.get()) == MT_E_BUSY) {
                 busy++;
@@ -675,7 +686,7 @@ TEST_F(WqThread, StressSchedulersIsrTimerAgainstQueueThread)
             std::this_thread::yield();
         }
     });
-    std::thread timer([&] {  // the timer procs: tick the queue's timers
+    std::thread timer([&] { // the timer procs: tick the queue's timers
         while (!timer_stop.load()) {
             mt_port_lock();
             fired += mt_wq_timer_tick_i(q.get(), mt_port_now_us());
@@ -712,11 +723,11 @@ TEST_F(WqThread, StressSchedulersIsrTimerAgainstQueueThread)
     mt_wq_report(q.get(), &qr);
     const uint64_t activations = ok.load() + merged.load() + fired.load();
     EXPECT_EQ(runs + item_merged, activations) << "an activation was lost";
-    EXPECT_GE(item_merged, merged.load());  // timer activations may merge too
+    EXPECT_GE(item_merged, merged.load()); // timer activations may merge too
     EXPECT_EQ(qr.merged, item_merged);
     EXPECT_EQ(qr.runs, runs);
     EXPECT_GT(fired.load(), 0u);
-    EXPECT_GE(qr.refused, busy.load());  // the queue thread may be refused too
+    EXPECT_GE(qr.refused, busy.load()); // the queue thread may be refused too
     EXPECT_GE(runs, 1u);
     // the race happened: merges, a refused second runner (informational)
     std::printf("wq stress: %llu activations (%llu timer), %llu runs, %llu merged, %u refused\n",
@@ -726,4 +737,4 @@ TEST_F(WqThread, StressSchedulersIsrTimerAgainstQueueThread)
                 qr.refused);
 }
 
-}  // namespace
+} // namespace

@@ -21,17 +21,17 @@ static void same(const char *what, const char *got, const char *want)
     }
 }
 
-#define BOTH(...)                                                                                  \
-    do {                                                                                           \
-        char a[128];                                                                               \
-        char b[128];                                                                               \
-        size_t n = vp_snprintf(a, sizeof(a), __VA_ARGS__);                                         \
-        int m = snprintf(b, sizeof(b), __VA_ARGS__);                                               \
-        same(#__VA_ARGS__, a, b);                                                                  \
-        if ((int)n != m) {                                                                         \
-            printf("FAIL length of %s: %zu, expected %d\n", #__VA_ARGS__, n, m);                   \
-            failures++;                                                                            \
-        }                                                                                          \
+#define BOTH(...)                                                                \
+    do {                                                                         \
+        char a[128];                                                             \
+        char b[128];                                                             \
+        size_t n = vp_snprintf(a, sizeof(a), __VA_ARGS__);                       \
+        int m = snprintf(b, sizeof(b), __VA_ARGS__);                             \
+        same(#__VA_ARGS__, a, b);                                                \
+        if ((int)n != m) {                                                       \
+            printf("FAIL length of %s: %zu, expected %d\n", #__VA_ARGS__, n, m); \
+            failures++;                                                          \
+        }                                                                        \
     } while (0)
 
 int main(void)
@@ -65,10 +65,18 @@ int main(void)
             unsigned d;
             const char *want;
         } t[] = {
-            {12345, 1000, 1, "12.3"},     {12350, 1000, 1, "12.4"},   {-12350, 1000, 1, "-12.4"},
-            {999999, 1000000, 3, "1.000"}, {1999500, 1000000, 3, "2.000"}, {0, 1000, 2, "0.00"},
-            {-4, 1000, 2, "0.00"},         {-5, 1000, 2, "-0.01"},     {7, 1, 0, "7"},
-            {-7, 1, 0, "-7"},              {5, 10, 0, "1"},            {1000000, 1000000, 3, "1.000"},
+            {12345, 1000, 1, "12.3"},
+            {12350, 1000, 1, "12.4"},
+            {-12350, 1000, 1, "-12.4"},
+            {999999, 1000000, 3, "1.000"},
+            {1999500, 1000000, 3, "2.000"},
+            {0, 1000, 2, "0.00"},
+            {-4, 1000, 2, "0.00"},
+            {-5, 1000, 2, "-0.01"},
+            {7, 1, 0, "7"},
+            {-7, 1, 0, "-7"},
+            {5, 10, 0, "1"},
+            {1000000, 1000000, 3, "1.000"},
             {123456789012345LL, 1000000, 3, "123456789.012"},
             {4294967296LL, 1000, 1, "4294967.3"},
         };

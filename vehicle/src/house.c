@@ -53,8 +53,7 @@ void veh_housekeeping(veh_t *v)
         battery_take(v, &m);
     }
     /* battery health: readings arrive at 3 Hz */
-    if (s->armed && s->bat_ok && ((veh_now(v) - s->bat_last_us) > 1000000u) &&
-        !s->bat_stale_said) {
+    if (s->armed && s->bat_ok && ((veh_now(v) - s->bat_last_us) > 1000000u) && !s->bat_stale_said) {
         s->bat_stale_said = true;
         veh_say(v, "vehicle: battery readings stopped");
     }

@@ -175,9 +175,10 @@ typedef struct {
 } veh_state_t;
 
 /** Battery readings on the `battery` topic (battery.c -> house.c). */
-#define VEH_BATTERY_PERIOD_US 333333u /* 3 Hz, as the housekeeping loop */
-#define VEH_BATTERY_QUEUE 2u          /* two readings retained: a late housekeeping run
-                                         still gets both; more are counted as missed */
+/* 3 Hz, as the housekeeping loop */
+#define VEH_BATTERY_PERIOD_US 333333u
+/* two readings retained: a late housekeeping run still gets both; more are counted as missed */
+#define VEH_BATTERY_QUEUE 2u
 typedef struct {
     uint64_t t_us; /**< time of the read */
     uint32_t mv;   /**< millivolts */
@@ -206,7 +207,7 @@ typedef struct {
     mt_work_t battery_work;
     mt_topic_t battery_topic;
     veh_battery_msg_t battery_store[VEH_BATTERY_QUEUE];
-    mt_sub_t battery_sub;      /**< housekeeping's subscription (main loop) */
+    mt_sub_t battery_sub;       /**< housekeeping's subscription (main loop) */
     uint32_t battery_read_fail; /**< work item: bus reads that failed (queue thread) */
     veh_counters_t c;
     uint64_t boot_us;

@@ -270,8 +270,8 @@ int main(void)
                                       MT_PRIO_TIMER) != MT_OK) ||
         (mt_chibios_proc_thread_start(&io_thread, "io", veh_io_procs(), IO_PERIOD_US, io_stack,
                                       (uint32_t)sizeof(io_stack), MT_PRIO_IO) != MT_OK) ||
-        (mt_chibios_wq_start(&wq_thread, veh_work_queue(), wq_stack,
-                             (uint32_t)sizeof(wq_stack)) != MT_OK)) {
+        (mt_chibios_wq_start(&wq_thread, veh_work_queue(), wq_stack, (uint32_t)sizeof(wq_stack)) !=
+         MT_OK)) {
         veh_printf("proc and work-queue threads could not start\n");
         fw_exit(FW_EXIT_FAILURE);
     }
