@@ -24,6 +24,8 @@ import re
 import sys
 
 HASH_RE = re.compile(r"^[0-9a-f]{32}$")
+# WP writes floats the OCaml way ("time": 2.), which JSON does not accept.
+OCAML_FLOAT = re.compile(r"(\d)\.(?=\s*[,}\]])")
 CACHE_LINE = re.compile(r"^\[wp\] \[Cache\] (.*)$")
 CACHE_KV = re.compile(r"(\w+):(\d+)")
 
@@ -53,7 +55,7 @@ def save(d, bundle):
             h, ext = os.path.splitext(name)
             if ext == ".json" and HASH_RE.match(h):
                 with open(os.path.join(d, name), encoding="utf-8") as f:
-                    entries[h] = json.load(f)
+                    entries[h] = json.loads(OCAML_FLOAT.sub(r"\1.0", f.read()))
     os.makedirs(os.path.dirname(bundle) or ".", exist_ok=True)
     with open(bundle, "w", encoding="utf-8") as f:
         f.write("{\n")
