@@ -12,6 +12,7 @@
 /*@ assigns \nothing;
     ensures \result == (v > 0xFFFFFFFF ? 0xFFFFFFFF : v);
 */
+// cppcheck-suppress misra-c2012-5.9 ; D-106 module-local helper, one per translation unit
 static uint32_t clamp_u32(uint64_t v)
 {
     return (v > U32_MAX_) ? U32_MAX_ : (uint32_t)v;
@@ -20,6 +21,7 @@ static uint32_t clamp_u32(uint64_t v)
 /*@ assigns \nothing;
     ensures \result == (a + b <= 0xFFFFFFFFFFFFFFFF ? a + b : 0xFFFFFFFFFFFFFFFF);
 */
+// cppcheck-suppress misra-c2012-5.9 ; D-106 module-local helper, one per translation unit
 static uint64_t sat_add_u64(uint64_t a, uint64_t b)
 {
     // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
