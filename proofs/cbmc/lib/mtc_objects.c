@@ -188,3 +188,31 @@ mt_sub_t *mtc_sub(mt_topic_t *t)
     s->sem.waiter = mtc_nondet_bool() ? (mt_port_tref_t)0 : (mt_port_tref_t)&mtc_thread;
     return s;
 }
+
+void mtc_wq_time_window(const mt_wq_t *q, uint64_t now)
+{
+    const uint64_t w = (uint64_t)1u << 20;
+    uint32_t i;
+
+    if (now < w) {
+        for (i = 0u; i < MT_CFG_WQ_MAX_ITEMS; i++) {
+            __CPROVER_assume(q->slot[i].deadline_us < 2u * w);
+        }
+    } else {
+        __CPROVER_assume(now >= UINT64_MAX - w);
+        for (i = 0u; i < MT_CFG_WQ_MAX_ITEMS; i++) {
+            __CPROVER_assume(q->slot[i].deadline_us >= UINT64_MAX - 2u * w);
+        }
+    }
+}
+
+uint64_t mtc_now_in_window(void)
+{
+    const uint64_t w = (uint64_t)1u << 20;
+    uint64_t t = mtc_nondet_u64();
+
+    /* the port contract (monotonic, recorded in MtPortNow), advancing by at most w */
+    __CPROVER_assume(t >= MtPortNow && (t - MtPortNow) <= w);
+    MtPortNow = t;
+    return t;
+}

@@ -93,6 +93,12 @@ mt_wq_t *mtc_wq(void);
  * of mt_proc_period_next's 64-bit division when a timer fires (a non-linear operand, hence a
  * set: assumption B1); deadlines, times and every other field stay nondeterministic. */
 void mtc_wq_periods(mt_wq_t *q);
+/** Time window of the timer harnesses (assumption B9): now and every slot's deadline in
+ *  [0, 2^21) with now < 2^20, or in [UINT64_MAX - 2^21, UINT64_MAX] with now >= UINT64_MAX - 2^20. */
+void mtc_wq_time_window(const mt_wq_t *q, uint64_t now);
+/** The port clock for the timer-proc harness (assumption B9): mt_port_now_us's contract
+ *  (monotonic, recorded in MtPortNow), advancing by at most 2^20 us per read. */
+uint64_t mtc_now_in_window(void);
 
 /* A work item handle attached to q at a nondeterministic slot (the requires bounds it). */
 mt_work_t *mtc_work(mt_wq_t *q);

@@ -11,6 +11,11 @@ void harness(void)
     mt_wq_t *q = mtc_wq();
     mtc_wq_periods(q);
     mtc_ghosts_nondet();
+    /* Time window (assumption B9): the time before the call and every deadline lie in one
+     * 2^20 us window at the bottom or the top of the 64-bit range, and the port's clock read
+     * inside the proc (mt_port_now_us, replaced by mtc_now_in_window: Makefile REPLACE_CALLS)
+     * advances by at most 2^20 us, saturating at UINT64_MAX. */
+    mtc_wq_time_window(q, MtPortNow);
 
     __CPROVER_assume(mtc_pre_mt_wq_timer_proc((void *)q));
     mtc_snapshot();

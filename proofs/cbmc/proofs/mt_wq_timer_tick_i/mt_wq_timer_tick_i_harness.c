@@ -12,6 +12,10 @@ void harness(void)
     mtc_wq_periods(q);
     uint64_t now = mtc_nondet_u64();
     mtc_ghosts_nondet();
+    /* Time window (assumption B9): now and every deadline lie in one 2^20 us window at the
+     * bottom or at the top of the 64-bit range, so the division by the interval in
+     * mt_proc_period_next is over 21-bit distances. */
+    mtc_wq_time_window(q, now);
 
     __CPROVER_assume(mtc_pre_mt_wq_timer_tick_i(q, now));
     mtc_snapshot();
