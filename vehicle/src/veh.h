@@ -102,7 +102,8 @@ typedef struct {
  *  @retval a scheduler status (the task table is rejected: *bad is the entry)
  *  @retval a mission status (the mission is rejected: *bad is the command index;
  *          the vehicle is set up and stays disarmed)
- *  @retval MT_E_FULL a proc set could not take the vehicle's procs */
+ *  @retval MT_E_FULL a proc set could not take the vehicle's procs
+ *  @retval a topic or work-queue status (the battery monitor could not be set up) */
 mt_status_t veh_init(const veh_platform_t *plat, const veh_home_t *home,
                      const mt_mission_cmd_t *cmds, uint16_t n, uint32_t *bad);
 

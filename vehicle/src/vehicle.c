@@ -272,14 +272,15 @@ mt_status_t veh_init(const veh_platform_t *plat, const veh_home_t *home,
     if (st != MT_OK) {
         return st;
     }
+    /* the work queue exists before its timer proc is registered */
+    st = veh_battery_init(v);
+    if (st != MT_OK) {
+        return st;
+    }
     if ((mt_proc_register(&v->timer_procs, veh_baro_timer_proc, v) != MT_OK) ||
         (mt_proc_register(&v->timer_procs, mt_wq_timer_proc, &v->wq) != MT_OK) ||
         (mt_proc_register(&v->io_procs, veh_log_io_proc, v) != MT_OK)) {
         return MT_E_FULL;
-    }
-    st = veh_battery_init(v);
-    if (st != MT_OK) {
-        return st;
     }
     v->mission_st = MT_E_EMPTY;
     if ((cmds != NULL) && (n > 0u)) {
