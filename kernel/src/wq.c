@@ -1088,7 +1088,7 @@ static void shot_reset(mt_wq_t *q, uint32_t s, uint32_t v)
 /* Wait for the completion of slot s (lock held; released while parked). While
  * parked, the runner moves the single-shot state on and any other context may
  * change the queue (as in relock_after_run, and the runner's fields too); the
- * contract admits that. Returns the single-shot state found on return. */
+ * contract allows for that (assumption W2). Returns the single-shot state found on return. */
 /*@ requires held: MtLocked == 1;
     requires inv: MtWqInv(q);
     requires slot: s < q->nitems;

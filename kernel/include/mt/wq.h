@@ -43,7 +43,7 @@
  *   `_i` = kernel lock held (task or ISR); `_isr` = interrupt handler.
  * - Contracts are sequential (assumption C2); where the lock is released
  *   (around a run and while a single-shot caller waits) the helpers' contracts
- *   admit what other contexts may change. The interleavings are checked by
+ *   allow for what other contexts may change (assumption W2). The interleavings are checked by
  *   tla/WorkQueue.tla.
  */
 #ifndef MT_WQ_H
