@@ -15,6 +15,8 @@ pinned count for a passing model, on a TLC error, or on a timeout.
     tla/run_tlc.py --only NAME ...  selected entries
     tla/run_tlc.py --update         re-measure and rewrite the pinned counts,
                                     depths and runtimes in the manifest
+    --jobs N (TLA_JOBS, default 2)  models checked side by side; each TLC keeps
+                                    -workers auto, and its own CPU time is reported
 
 Results go to <out>/summary.json (<out>/summary-deep.json for --deep) and one
 log per model in <out>/logs/. TLC runs on a copy of the module and config in
@@ -24,11 +26,14 @@ import argparse
 import json
 import os
 import re
-import resource
 import shutil
+import signal
 import subprocess
 import sys
+import tempfile
+import threading
 import time
+from concurrent.futures import ThreadPoolExecutor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -101,20 +106,24 @@ def run_one(entry, args):
            "-metadir", os.path.join(work, "states"), "-config", cfg, module + ".tla"]
     timeout = entry.get("timeout_s", args.timeout)
     t0 = time.monotonic()
-    ru0 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    try:
-        p = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                           universal_newlines=True, timeout=timeout)
-        log = p.stdout
-        outcome = classify(log, props)
-    except subprocess.TimeoutExpired as e:
-        log = e.stdout or ""
-        if isinstance(log, bytes):
-            log = log.decode(errors="replace")
+    # One process per model, waited for with wait4: its own CPU time, also when models run
+    # side by side (--jobs).
+    with tempfile.TemporaryFile(mode="w+") as out:
+        p = subprocess.Popen(cmd, cwd=work, stdout=out, stderr=subprocess.STDOUT,
+                             universal_newlines=True)
+        timer = threading.Timer(timeout, p.kill)
+        timer.start()
+        _, status, ru = os.wait4(p.pid, 0)
+        timer.cancel()
+        p.returncode = os.waitstatus_to_exitcode(status)
+        out.seek(0)
+        log = out.read()
+    if p.returncode == -signal.SIGKILL:
         outcome = "error: timeout after %d s" % timeout
+    else:
+        outcome = classify(log, props)
     seconds = round(time.monotonic() - t0, 1)
-    ru1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = round((ru1.ru_utime - ru0.ru_utime) + (ru1.ru_stime - ru0.ru_stime), 1)
+    cpu = round(ru.ru_utime + ru.ru_stime, 1)
     os.makedirs(os.path.join(args.out, "logs"), exist_ok=True)
     with open(os.path.join(args.out, "logs", name + ".log"), "w") as f:
         f.write("$ " + " ".join(cmd) + "\n" + log)
@@ -152,6 +161,8 @@ def main():
     ap.add_argument("--timeout", type=int, default=int(os.environ.get("TLA_TIMEOUT", "120")),
                     help="per-model cap in seconds for CI entries (deep entries: 10x)")
     ap.add_argument("--heap", default=os.environ.get("TLA_HEAP", "2g"))
+    ap.add_argument("--jobs", "-j", type=int, default=int(os.environ.get("TLA_JOBS", "2")),
+                    help="models checked side by side (each TLC keeps -workers auto)")
     args = ap.parse_args()
     args.jar = os.path.abspath(args.jar)
     args.out = os.path.abspath(args.out)
@@ -174,8 +185,10 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     results = []
     t_all = time.monotonic()
-    for e in selected:
-        r = run_one(e, args)
+    with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
+        futs = [ex.submit(run_one, e, args) for e in selected]
+    for e, f in zip(selected, futs):
+        r = f.result()
         results.append(r)
         count = "" if r["distinct_states"] is None else "%d states" % r["distinct_states"]
         print("%-4s %-34s %-28s %14s %7.1f s %7.1f s cpu%s" % (
