@@ -62,9 +62,21 @@ wp_model      = $(or $(WP_MODEL_$(1)),Typed)
 
 # WP_SMOKE=no drops the smoke tests (only for the prover-diversity runs, which compare goals).
 WP_SMOKE     ?= yes
+# WP_KEY_FLAGS: every option that can change a verdict (the module record's key hashes them);
+# the session cache mode and the number of parallel prover runs are added in WP_FLAGS.
+WP_KEY_FLAGS = -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast \
+           $(if $(filter no,$(WP_SMOKE)),-wp-no-smoke-tests,-wp-smoke-tests) -wp-smoke-timeout $(WP_SMOKE_TIMEOUT) -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) \
+           $(WP_INC) $(if $(WP_FCT),-wp-fct $(WP_FCT))
 WP_FLAGS = -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast \
            $(if $(filter no,$(WP_SMOKE)),-wp-no-smoke-tests,-wp-smoke-tests) -wp-smoke-timeout $(WP_SMOKE_TIMEOUT) -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) -wp-par $(WP_PAR) \
            -wp-cache $(WP_CACHE) -cpp-extra-args="$(WP_INC)" $(if $(WP_FCT),-wp-fct $(WP_FCT))
+# Module records (proofs/wp/record.py, assumption W5): a module whose key (preprocessed source,
+# WP_KEY_FLAGS, model, Why3 configuration, tool versions) matches its last passing run in
+# $(WP_DIR), or its committed record proofs/wp/records/<m>.json.gz, is not re-run: the run's
+# report and log are restored, and the gate and the report say so. Only with WP_CACHE=update or
+# replay and without WP_FCT; WP_RECORD=no (or WP_CACHE=none) runs Frama-C on every module.
+WP_RECORD    ?= yes
+wp_use_record = $(and $(filter yes,$(WP_RECORD)),$(filter update replay,$(WP_CACHE)),$(if $(WP_FCT),,yes))
 
 .PHONY: prove prove-selftest deps-prove wp wp-all wp-gate wp-canary wp-clean wp-diversity wp-conf \
         wp-cache-save \
@@ -94,9 +106,17 @@ wp-conf: $(WP_WHY3CONF)
 # re-proves from the cache.
 $(addprefix wp-,$(WP_MODULES)): wp-%: $(WP_WHY3CONF)
 	@mkdir -p $(WP_DIR)/$*
-	@$(if $(filter none,$(WP_CACHE)),true,python3 proofs/wp/cache.py seed $(WP_CACHE_DIR)/$*.json \
-	    $(WP_DIR)/$*/session/cache >/dev/null)
-	@start=$$(date +%s.%N); \
+	@python3 proofs/wp/record.py key $* $(WP_DIR)/$*/key.new -- $(WP_KEY_FLAGS) \
+	    -wp-model $(call wp_model,$*) -- $(call wp_src,$*)
+	@$(if $(wp_use_record),if why=$$(python3 proofs/wp/record.py replay $* \
+	        "$$(cat $(WP_DIR)/$*/key.new)" $(WP_DIR)/$*); then \
+	    printf 'wp %-8s %s (%s)\n' "$*" \
+	        "$$(grep -m1 'Proved goals' $(WP_DIR)/$*/wp.log | sed 's/.*Proved goals: *//')" "$$why"; \
+	    rm -f $(WP_DIR)/$*/key.new; exit 0; fi;) \
+	rm -f $(WP_DIR)/$*/key.txt $(WP_DIR)/$*/record.txt; \
+	$(if $(filter none,$(WP_CACHE)),true,python3 proofs/wp/cache.py seed $(WP_CACHE_DIR)/$*.json \
+	    $(WP_DIR)/$*/session/cache >/dev/null;) \
+	start=$$(date +%s.%N); \
 	WHY3CONFIG=$(WP_WHY3CONF) frama-c $(WP_FLAGS) -wp-model $(call wp_model,$*) \
 	    -wp-session $(WP_DIR)/$*/session -wp-report-json $(WP_DIR)/$*/report.json \
 	    $(call wp_src,$*) >$(WP_DIR)/$*/wp.log 2>&1; rc=$$?; \
@@ -106,6 +126,7 @@ $(addprefix wp-,$(WP_MODULES)): wp-%: $(WP_WHY3CONF)
 	    "$$(grep -m1 'Proved goals' $(WP_DIR)/$*/wp.log | sed 's/.*Proved goals: *//')" \
 	    "$$(cut -d. -f1 $(WP_DIR)/$*/time.txt)" \
 	    "$$(python3 proofs/wp/cache.py count $(WP_DIR)/$*/wp.log)"; \
+	mv $(WP_DIR)/$*/key.new $(WP_DIR)/$*/key.txt; \
 	exit $$rc
 
 wp-all: $(addprefix wp-,$(WP_MODULES))
@@ -136,6 +157,7 @@ wp-cache-save: $(WP_WHY3CONF)
 	    { tail -n 30 $(WP_DIR)/gate.txt; echo "wp-cache-save: the gate failed, bundles not written"; exit 1; }
 	@for m in $(WP_MODULES); do \
 	    python3 proofs/wp/cache.py save $(WP_DIR)/$$m/session/cache $(WP_CACHE_DIR)/$$m.json; \
+	    python3 proofs/wp/record.py save $$m $(WP_DIR)/$$m || exit 1; \
 	done
 
 wp-gate:

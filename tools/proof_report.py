@@ -98,6 +98,9 @@ def main():
             "smoke": wp.get("smoke", 0), "smoke_passed": wp.get("smoke_passed", 0),
             "by_prover": wp.get("by_prover", {}), "modules": sorted(wp.get("modules", {})),
             "cache_replayed": wp.get("cache_replayed", 0), "cache_fresh": wp.get("cache_fresh", 0),
+            "modules_run": wp.get("modules_run", []),
+            "modules_unchanged": wp.get("modules_unchanged", []),
+            "modules_replayed": wp.get("modules_replayed", []),
         }
         if wp.get("proved", 0) != wp.get("goals", 0) or wp.get("goals", 0) == 0:
             problems.append(f"WP: {wp.get('proved', 0)}/{wp.get('goals', 0)} goals proved")
@@ -109,6 +112,8 @@ def main():
         summary["cbmc"] = {
             "harnesses": cbmc.get("harnesses", 0), "passed": cbmc.get("passed", 0),
             "min_coverage": min([r.get("coverage", 0.0) for r in cbmc.get("results", [])] or [0.0]),
+            "coverage_fresh": cbmc.get("coverage_fresh", 0),
+            "coverage_replayed": cbmc.get("coverage_replayed", 0),
         }
         if cbmc.get("passed", 0) != cbmc.get("harnesses", 0) or cbmc.get("harnesses", 0) == 0:
             problems.append(f"CBMC: {cbmc.get('passed', 0)}/{cbmc.get('harnesses', 0)} harnesses passed")
@@ -245,12 +250,26 @@ def main():
         w = summary["wp"]
         md.append(f"- Frama-C WP (RTE, unsigned overflow/downcast, smoke tests): {w['proved']}/{w['goals']} goals, "
                   f"{w['smoke_passed']}/{w['smoke']} smoke tests; by prover: {json.dumps(w['by_prover'], sort_keys=True)}")
-        md.append(f"- WP prover results: {w['cache_fresh']} from provers run in this run, {w['cache_replayed']} "
+        md.append(f"- WP modules: {len(w['modules_run'])} run by Frama-C in this run "
+                  f"({', '.join(w['modules_run']) or 'none'}); "
+                  f"{len(w['modules_unchanged'])} unchanged since their last passing run in this "
+                  f"build folder ({', '.join(w['modules_unchanged']) or 'none'}); "
+                  f"{len(w['modules_replayed'])} replayed from committed module records, keyed by "
+                  "the digest of their inputs ({}; proofs/wp/records, assumption W5; "
+                  "`make prove WP_RECORD=no` runs Frama-C on every module)".format(
+                      ", ".join(w['modules_replayed']) or "none"))
+        md.append(f"- WP prover results of the modules run: {w['cache_fresh']} from provers run in "
+                  f"this run, {w['cache_replayed']} "
                   "replayed from the WP cache (verdicts of byte-identical prover tasks recorded in "
                   "proofs/wp/cache; assumption W4; `make prove WP_CACHE=none` runs every prover)")
     if summary["cbmc"]:
         c = summary["cbmc"]
-        md.append(f"- CBMC: {c['passed']}/{c['harnesses']} harnesses, lowest coverage {c['min_coverage']:.0f}%")
+        md.append(f"- CBMC: {c['passed']}/{c['harnesses']} harnesses, lowest coverage {c['min_coverage']:.0f}%; "
+                  "every property run ran in this run; coverage verdicts: "
+                  f"{c['coverage_fresh']} from coverage runs made now, {c['coverage_replayed']} replayed "
+                  "from proofs/cbmc/coverage-record.json for byte-identical preprocessed inputs, "
+                  "options and tool versions (assumption B10; `make prove CBMC_COVERAGE=fresh` runs "
+                  "every coverage run)")
     if summary["tla"]:
         t = summary["tla"]
         md.append(f"- TLC: {t['passed']}/{t['models']} model configurations as expected")

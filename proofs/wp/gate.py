@@ -129,6 +129,13 @@ def module_stats(module, wp_dir):
     times, lines = parse_log(os.path.join(d, "wp.log"))
     res["cache_replayed"], res["cache_fresh"] = wp_cache.count(os.path.join(d, "wp.log"))
     res["fatal"], res["info"] = log_findings(module, lines)
+    # Not re-run (proofs/wp/record.py, W5): the files are the last run's, or a committed record's.
+    res["origin"] = None
+    ofile = os.path.join(d, "record.txt")
+    if os.path.exists(ofile):
+        parts = open(ofile, encoding="utf-8").read().split()
+        if len(parts) >= 2:
+            res["origin"] = {"source": parts[0], "date": parts[1]}
     tfile = os.path.join(d, "time.txt")
     if os.path.exists(tfile):
         try:
@@ -235,8 +242,11 @@ def gate(args):
             continue
         flag = "" if (s["proved"] == s["goals"] and s["smoke_passed"] == s["smoke"] and
                       not s["fatal"] and s["goals"] > 0) else "  <-- FAIL"
+        o = s.get("origin")
+        note = "" if not o else (f"  (module record of {o['date']}, W5)" if o["source"] == "record"
+                                 else f"  (unchanged since the run of {o['date']}, W5)")
         out.append(f"{s['module']:44} {s['proved']:>5}/{s['goals']:<5} "
-                   f"{s['smoke_passed']:>4}/{s['smoke']:<4} {fmt_time(s['time_s']):>8}{flag}")
+                   f"{s['smoke_passed']:>4}/{s['smoke']:<4} {fmt_time(s['time_s']):>8}{flag}{note}")
         if not args.quiet:
             for fn in sorted(s["functions"]):
                 f = s["functions"][fn]
@@ -253,11 +263,21 @@ def gate(args):
                f"{tot['smoke_passed']:>4}/{tot['smoke']:<4}")
     out.append("proved by (WP counts, smoke tests included): " +
                ", ".join(f"{p} {v}" for p, v in sorted(by_prover.items())))
-    replayed = sum(s.get("cache_replayed") or 0 for s in stats)
-    fresh = sum(s.get("cache_fresh") or 0 for s in stats)
-    out.append(f"prover results (goals and smoke tests): {fresh} from provers run now, {replayed} "
+    replayed = sum(s.get("cache_replayed") or 0 for s in stats if not s.get("origin"))
+    fresh = sum(s.get("cache_fresh") or 0 for s in stats if not s.get("origin"))
+    out.append(f"prover results of the modules run now (goals and smoke tests): {fresh} from "
+               f"provers run now, {replayed} "
                "replayed from the WP cache (verdicts recorded for byte-identical prover tasks; "
                "proofs/wp/cache, assumption W4; WP_CACHE=none runs every prover)")
+    rec = [s["module"] for s in stats if (s.get("origin") or {}).get("source") == "record"]
+    kept = [s["module"] for s in stats if (s.get("origin") or {}).get("source") == "run"]
+    run = [s["module"] for s in stats if not s.get("origin") and not s["missing"]]
+    out.append(f"modules: {len(run)} run by Frama-C now" + (f" ({', '.join(run)})" if run else "") +
+               f", {len(kept)} unchanged since their last run here" +
+               (f" ({', '.join(kept)})" if kept else "") +
+               f", {len(rec)} replayed from module records" + (f" ({', '.join(rec)})" if rec else "") +
+               " (records: proofs/wp/records, assumption W5; WP_RECORD=no or WP_CACHE=none "
+               "runs Frama-C on every module)")
     problems = []
     for s in stats:
         problems += [f"{s['module']}: unproved: {x}" for x in s["failures"]]
@@ -290,13 +310,14 @@ def gate(args):
     summary = {
         "modules": {s["module"]: {k: s[k] for k in ("goals", "proved", "smoke", "smoke_passed",
                                                     "time_s", "prover_time_s", "by_prover",
-                                                    "cache_replayed", "cache_fresh",
+                                                    "cache_replayed", "cache_fresh", "origin",
                                                     "functions", "failures", "fatal")}
                     for s in stats},
         "goals": tot["goals"], "proved": tot["proved"],
         "smoke": tot["smoke"], "smoke_passed": tot["smoke_passed"],
         "by_prover": by_prover,
         "cache_replayed": replayed, "cache_fresh": fresh,
+        "modules_run": run, "modules_unchanged": kept, "modules_replayed": rec,
         "acsl_forbidden": acsl,
         "smoke_canary": canary,
         "pass": ok,
