@@ -16,6 +16,9 @@
    globals in contracts, on a second sample: proved, and a changed scalar or struct field is
    caught under the clause's label.
    Skipped (with a message) when frama-c is not installed; SKIP_WP=1 skips the WP half.
+6. The keys of the recorded verdicts (CBMC coverage records, B10; WP module records, W5): equal
+   for copies of the tree at two other paths and for the repository itself, changed by an
+   option and by a comment line added to a header.
 
 Everything runs on copies under build/proof/cbmc/test/; kernel/ is never modified.
 """
@@ -469,6 +472,81 @@ class KernelMutation(unittest.TestCase):
         self.assertEqual(bad, [])
         bad, _ = self.wp("mutated")
         self.assertEqual(bad, [WP_GOAL])
+
+
+def copy_for_keys(dst):
+    """kernel/, the CBMC proof farm, the translator and the WP record tools, at another path."""
+    shutil.rmtree(dst, ignore_errors=True)
+    for d in ("kernel", os.path.join("proofs", "cbmc")):
+        shutil.copytree(os.path.join(ROOT, d), os.path.join(dst, d))
+    os.makedirs(os.path.join(dst, "tools"))
+    shutil.copy(TOOL, os.path.join(dst, "tools"))
+    os.makedirs(os.path.join(dst, "proofs", "wp"))
+    for f in ("record.py", "gate.py", "cache.py", "why3.conf", "z3_fixedto.drv", "goal_only.sh",
+              "mkconf.sh"):
+        shutil.copy(os.path.join(ROOT, "proofs", "wp", f), os.path.join(dst, "proofs", "wp"))
+
+
+def prepend(path, text):
+    with open(path, encoding="utf-8") as f:
+        body = f.read()
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text + body)
+
+
+class RecordKeys(unittest.TestCase):
+    """The digests that decide whether a recorded verdict may be replayed (assumptions W5 and
+    B10): the same for the same inputs at another path, different after a one-line change of
+    a source or header, or of an option."""
+
+    def setUp(self):
+        # fresh copies for each test: a test changes a header in its copy b
+        self.a = os.path.join(WORK, "keys", "a")
+        self.b = os.path.join(WORK, "keys", "elsewhere", "b")
+        copy_for_keys(self.a)
+        copy_for_keys(self.b)
+
+    def cover_key(self, root, extra=()):
+        p = subprocess.run(["make", "-s", "-C", os.path.join(root, "proofs", "cbmc", "proofs",
+                                                           "mt_bring_write"), "cover-key",
+                            f"TOOLS_BIN={BIN}"] + list(extra),
+                           capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        key = p.stdout.strip()
+        self.assertRegex(key, r"^[0-9a-f]{64}$")
+        return key
+
+    def wp_key(self, root, flags):
+        out = os.path.join(root, "key.txt")
+        p = subprocess.run([sys.executable, os.path.join(root, "proofs", "wp", "record.py"),
+                            "key", "ring", out, "--"] + flags + ["--", "kernel/src/ring.c"],
+                           capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        with open(out) as f:
+            return f.read().strip()
+
+    @unittest.skipUnless(os.path.exists(os.path.join(BIN, "goto-cc")), "CBMC not installed")
+    def test_cover_key(self):
+        k_repo = self.cover_key(ROOT)
+        k_a = self.cover_key(self.a)
+        self.assertEqual(k_a, self.cover_key(self.b), "the key depends on the location")
+        self.assertEqual(k_a, k_repo, "a copy of the repository gives another key")
+        self.assertNotEqual(k_a, self.cover_key(self.a, ["UNWIND=7"]), "an option is not in the key")
+        prepend(os.path.join(self.b, "kernel", "include", "mt", "ring.h"), "/* moved */\n")
+        self.assertNotEqual(k_a, self.cover_key(self.b), "a header change is not in the key")
+
+    @unittest.skipIf(shutil.which("frama-c") is None or shutil.which("gcc") is None,
+                     "frama-c not installed")
+    def test_wp_key(self):
+        flags = ["-wp", "-wp-rte", "-wp-timeout", "20", "-Ikernel/include", "-Ikernel/port",
+                 "-Ikernel/spec", "-Ikernel/src", "-wp-model", "Typed"]
+        k_a = self.wp_key(self.a, flags)
+        k_b = self.wp_key(self.b, flags)
+        self.assertEqual(k_a, k_b, "the key depends on the location")
+        self.assertNotEqual(k_a, self.wp_key(self.a, [f if f != "20" else "21" for f in flags]),
+                            "an option is not in the key")
+        prepend(os.path.join(self.b, "kernel", "spec", "mt_spec_ring.h"), "/* moved */\n")
+        self.assertNotEqual(k_a, self.wp_key(self.b, flags), "a spec header change is not in the key")
 
 
 def main():

@@ -10,7 +10,7 @@
 #                        proofs/cbmc/coverage-record.json when the digest of its inputs is the
 #                        recorded one (assumption B10), else run; fresh: every coverage run is
 #                        run; save: as replay, and every fresh verdict of a passing harness is
-#                        recorded (e.g. make cbmc CBMC_ALL=1 CBMC_COVERAGE=save)
+#                        recorded (e.g. make cbmc CBMC_COVERAGE=save)
 #   make cbmc-max        the capacity-maximum tier (ring capacities 2^30 - 1 and 2^30, 31-bit
 #                        indices): slow, run nightly; build/proof/cbmc/summary-max.json
 #   make cbmc-gen        only translate the ACSL contracts (build/proof/cbmc/gen/)
