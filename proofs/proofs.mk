@@ -63,13 +63,12 @@ wp_model      = $(or $(WP_MODEL_$(1)),Typed)
 # WP_SMOKE=no drops the smoke tests (only for the prover-diversity runs, which compare goals).
 WP_SMOKE     ?= yes
 # WP_KEY_FLAGS: every option that can change a verdict (the module record's key hashes them);
-# the session cache mode and the number of parallel prover runs are added in WP_FLAGS.
-WP_KEY_FLAGS = -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast \
+# WP_FLAGS adds the session cache mode and the number of parallel prover runs.
+WP_CORE_FLAGS = -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast \
            $(if $(filter no,$(WP_SMOKE)),-wp-no-smoke-tests,-wp-smoke-tests) -wp-smoke-timeout $(WP_SMOKE_TIMEOUT) -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) \
-           $(WP_INC) $(if $(WP_FCT),-wp-fct $(WP_FCT))
-WP_FLAGS = -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast \
-           $(if $(filter no,$(WP_SMOKE)),-wp-no-smoke-tests,-wp-smoke-tests) -wp-smoke-timeout $(WP_SMOKE_TIMEOUT) -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) -wp-par $(WP_PAR) \
-           -wp-cache $(WP_CACHE) -cpp-extra-args="$(WP_INC)" $(if $(WP_FCT),-wp-fct $(WP_FCT))
+           $(if $(WP_FCT),-wp-fct $(WP_FCT))
+WP_KEY_FLAGS = $(WP_CORE_FLAGS) $(WP_INC)
+WP_FLAGS = $(WP_CORE_FLAGS) -wp-par $(WP_PAR) -wp-cache $(WP_CACHE) -cpp-extra-args="$(WP_INC)"
 # Module records (proofs/wp/record.py, assumption W5): a module whose key (preprocessed source,
 # WP_KEY_FLAGS, model, Why3 configuration, tool versions) matches its last passing run in
 # $(WP_DIR), or its committed record proofs/wp/records/<m>.json.gz, is not re-run: the run's
