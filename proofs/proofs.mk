@@ -105,7 +105,7 @@ wp-conf: $(WP_WHY3CONF)
 # re-proves from the cache.
 $(addprefix wp-,$(WP_MODULES)): wp-%: $(WP_WHY3CONF)
 	@mkdir -p $(WP_DIR)/$*
-	@python3 proofs/wp/record.py key $* $(WP_DIR)/$*/key.new -- $(WP_KEY_FLAGS) \
+	@WHY3CONFIG=$(WP_WHY3CONF) python3 proofs/wp/record.py key $* $(WP_DIR)/$*/key.new -- $(WP_KEY_FLAGS) \
 	    -wp-model $(call wp_model,$*) -- $(call wp_src,$*)
 	@$(if $(wp_use_record),if why=$$(python3 proofs/wp/record.py replay $* \
 	        "$$(cat $(WP_DIR)/$*/key.new)" $(WP_DIR)/$*); then \

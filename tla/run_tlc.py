@@ -187,20 +187,20 @@ def main():
     t_all = time.monotonic()
     with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
         futs = [ex.submit(run_one, e, args) for e in selected]
-    for e, f in zip(selected, futs):
-        r = f.result()
-        results.append(r)
-        count = "" if r["distinct_states"] is None else "%d states" % r["distinct_states"]
-        print("%-4s %-34s %-28s %14s %7.1f s %7.1f s cpu%s" % (
-            "ok" if r["ok"] else "FAIL", r["name"], r["result"][:28], count, r["seconds"],
-            r["cpu_s"],
-            "" if r["ok"] else "  " + r["problem"]), flush=True)
-        if args.update and r["ok"]:
-            if e["expect"] == "pass":
-                e["distinct_states"] = r["distinct_states"]
-                e["depth"] = r["depth"]
-            e["runtime_s"] = r["seconds"]
-            e["cpu_s"] = r["cpu_s"]
+        for e, f in zip(selected, futs):
+            r = f.result()
+            results.append(r)
+            count = "" if r["distinct_states"] is None else "%d states" % r["distinct_states"]
+            print("%-4s %-34s %-28s %14s %7.1f s %7.1f s cpu%s" % (
+                "ok" if r["ok"] else "FAIL", r["name"], r["result"][:28], count, r["seconds"],
+                r["cpu_s"],
+                "" if r["ok"] else "  " + r["problem"]), flush=True)
+            if args.update and r["ok"]:
+                if e["expect"] == "pass":
+                    e["distinct_states"] = r["distinct_states"]
+                    e["depth"] = r["depth"]
+                e["runtime_s"] = r["seconds"]
+                e["cpu_s"] = r["cpu_s"]
 
     passed = sum(1 for r in results if r["ok"])
     summary = {"models": results, "passed": passed, "total": len(results),

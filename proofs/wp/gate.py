@@ -120,6 +120,18 @@ def is_smoke(prop):
     return "_wp_smoke_" in prop
 
 
+def read_origin(d):
+    """Where a module's files come from when it was not re-run (proofs/wp/record.py, W5):
+    {"source": "run" (its last passing run here) or "record" (a committed record), "date"};
+    None after a Frama-C run (record.txt absent)."""
+    p = os.path.join(d, "record.txt")
+    if not os.path.exists(p):
+        return None
+    parts = open(p, encoding="utf-8").read().split()
+    return {"source": parts[0], "date": parts[1]} if len(parts) >= 2 else \
+        {"source": "?", "date": "?"}
+
+
 def module_stats(module, wp_dir):
     d = os.path.join(wp_dir, module)
     rep = os.path.join(d, "report.json")
@@ -129,13 +141,7 @@ def module_stats(module, wp_dir):
     times, lines = parse_log(os.path.join(d, "wp.log"))
     res["cache_replayed"], res["cache_fresh"] = wp_cache.count(os.path.join(d, "wp.log"))
     res["fatal"], res["info"] = log_findings(module, lines)
-    # Not re-run (proofs/wp/record.py, W5): the files are the last run's, or a committed record's.
-    res["origin"] = None
-    ofile = os.path.join(d, "record.txt")
-    if os.path.exists(ofile):
-        parts = open(ofile, encoding="utf-8").read().split()
-        if len(parts) >= 2:
-            res["origin"] = {"source": parts[0], "date": parts[1]}
+    res["origin"] = read_origin(d)
     tfile = os.path.join(d, "time.txt")
     if os.path.exists(tfile):
         try:

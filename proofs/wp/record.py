@@ -75,7 +75,8 @@ def key(module, flags, sources):
     add("module", module)
     add("frama-c", tool_line(["frama-c", "-version"]))
     add("why3", tool_line(["why3", "--version"]))
-    conf = os.path.join(ROOT, "build/proof/why3.conf")
+    # the configuration the runs use: proofs.mk passes it as WHY3CONFIG ($(WP_WHY3CONF))
+    conf = os.environ.get("WHY3CONFIG") or os.path.join(ROOT, "build/proof/why3.conf")
     # (running_provers_max is the machine's core count: it changes no verdict)
     text = open(conf, encoding="utf-8").read() if os.path.exists(conf) else "-"
     add("why3.conf", "\n".join(ln for ln in text.splitlines()
@@ -102,16 +103,6 @@ def record_path(module):
     return os.path.join(RECORDS, f"{module}.json.gz")
 
 
-def read_origin(d):
-    """(source, date) of a run directory that was not re-run: ("run", date) for a local run
-    reused, ("record", date) for a committed record replayed; None after a Frama-C run."""
-    p = os.path.join(d, "record.txt")
-    if not os.path.exists(p):
-        return None
-    parts = open(p, encoding="utf-8").read().split()
-    return (parts[0], parts[1]) if len(parts) >= 2 else ("?", "?")
-
-
 def write_origin(d, source, date):
     with open(os.path.join(d, "record.txt"), "w", encoding="utf-8") as f:
         f.write(f"{source} {date}\n")
@@ -123,13 +114,13 @@ def replay(module, k, d):
     if os.path.exists(kfile) and open(kfile).read().strip() == k:
         ok, _ = all_passed(module, d)
         if ok:
-            origin = read_origin(d)
+            origin = gate.read_origin(d)
             if origin is None:
                 t = os.path.getmtime(os.path.join(d, "report.json"))
-                origin = ("run", datetime.date.fromtimestamp(t).isoformat())
-                write_origin(d, *origin)
-            what = "module record" if origin[0] == "record" else "run"
-            return f"not re-run: unchanged since the {what} of {origin[1]} (W5)"
+                origin = {"source": "run", "date": datetime.date.fromtimestamp(t).isoformat()}
+                write_origin(d, origin["source"], origin["date"])
+            what = "module record" if origin["source"] == "record" else "run"
+            return f"not re-run: unchanged since the {what} of {origin['date']} (W5)"
     rp = record_path(module)
     if not os.path.exists(rp):
         return None
@@ -153,8 +144,8 @@ def save(module, d):
     if not ok or not os.path.exists(kfile):
         raise SystemExit(f"record.py: {module}: not recorded (the run in {d} did not pass "
                          "every goal and smoke test, or has no key)")
-    origin = read_origin(d)
-    if origin and origin[0] == "record":
+    origin = gate.read_origin(d)
+    if origin and origin["source"] == "record":
         raise SystemExit(f"record.py: {module}: {d} holds a replayed record, not a run")
     files = {}
     for name in ("report.json", "wp.log", "time.txt"):
