@@ -28,6 +28,10 @@ Semantics of the translation (see proofs/cbmc/README.md for the full list):
   * ACSL integers are __int128 in C: every integer read is widened first, so no spec
     expression wraps for the value ranges of the kernel (|x| < 2^100); CBMC's overflow checks
     stay on for the generated code, so an out-of-range spec computation is reported, not hidden.
+  * a / b and a % b are computed at the narrowest width that is exact for their operands
+    (Translator.divide): 32 or 64 bits when the operands' ranges, derived from the C types
+    they are read from, fit; __int128 when a range can leave 64 bits; otherwise 64 bits behind
+    an assertion that the operands are in range (a failed assertion, never a wrong value).
   * booleans read from C memory are normalised with `!= 0`.
   * \\old(e) reads memory through the snapshot registry (proofs/cbmc/lib/mtc.c): the harness
     copies every object it allocated (deep: buffers are objects of their own) before the call.
@@ -1190,12 +1194,67 @@ INT128 = "__int128"
 class LT:
     """Logic-level type of a translated expression."""
 
-    def __init__(self, kind, ctype=None):
+    def __init__(self, kind, ctype=None, rng=None):
         self.kind = kind      # int | bool | ptr | struct | fnptr
         self.ctype = ctype    # ptr: the pointer CType; struct: the struct CType
+        self.rng = rng        # int: (lo, hi), bounds every value can take, or None (unknown)
 
     def __repr__(self):
         return f"LT({self.kind})"
+
+
+U32_MAX = (1 << 32) - 1
+U64_MAX = (1 << 64) - 1
+I64_MIN = -(1 << 63)
+I64_MAX = (1 << 63) - 1
+
+
+def int_range(ctype):
+    """Bounds of a C integer type (x86_64, LP64), or None."""
+    if ctype.kind == "bool":
+        return (0, 1)
+    if ctype.kind == "enum":
+        return (-(1 << 31), (1 << 31) - 1)
+    words = (ctype.spell or "").split()
+    if ctype.kind != "int" or not words:
+        return None
+    if "__int128" in words:
+        bits = 128
+    elif "char" in words:
+        bits = 8
+    elif "short" in words:
+        bits = 16
+    elif "long" in words:
+        bits = 64
+    else:
+        bits = 32
+    if "unsigned" in words:
+        return (0, (1 << bits) - 1)
+    return (-(1 << (bits - 1)), (1 << (bits - 1)) - 1)
+
+
+def rng_op(op, ra, rb):
+    """Bounds of ra op rb (interval arithmetic; None when unknown)."""
+    if ra is None or rb is None:
+        return None
+    if op == "+":
+        return (ra[0] + rb[0], ra[1] + rb[1])
+    if op == "-":
+        return (ra[0] - rb[1], ra[1] - rb[0])
+    if op == "*":
+        c = [x * y for x in ra for y in rb]
+        return (min(c), max(c))
+    if op in ("/", "%") and ra[0] >= 0 and rb[0] >= 1:
+        if op == "/":
+            return (ra[0] // rb[1], ra[1] // rb[0])
+        return (0, min(ra[1], rb[1] - 1))
+    return None
+
+
+def rng_hull(ra, rb):
+    if ra is None or rb is None:
+        return None
+    return (min(ra[0], rb[0]), max(ra[1], rb[1]))
 
 
 class Ctx:
@@ -1289,9 +1348,9 @@ class Translator:
         if ctype == "integer":
             return cexpr, LT("int")
         if ctype.kind in ("int", "enum"):
-            return f"(({INT128})({cexpr}))", LT("int")
+            return f"(({INT128})({cexpr}))", LT("int", rng=int_range(ctype))
         if ctype.kind == "bool":
-            return f"(({INT128})(({cexpr}) != 0))", LT("int")
+            return f"(({INT128})(({cexpr}) != 0))", LT("int", rng=(0, 1))
         if ctype.kind == "ptr":
             if ctype.to.kind == "fn":
                 return cexpr, LT("fnptr", ctype)
@@ -1374,11 +1433,13 @@ class Translator:
         w = ctx.where
         tag = e[0]
         if tag == "num":
-            return self.num(e[1], w), LT("int")
+            c = self.num(e[1], w)
+            v = int(re.match(r"0[xX][0-9a-fA-F]+|[0-9]+", e[1]).group(0), 0)
+            return c, LT("int", rng=(v, v))
         if tag == "true":
-            return f"(({INT128})1)", LT("int")
+            return f"(({INT128})1)", LT("int", rng=(1, 1))
         if tag == "false":
-            return f"(({INT128})0)", LT("int")
+            return f"(({INT128})0)", LT("int", rng=(0, 0))
         if tag == "null":
             return "((void *)0)", LT("ptr", CType("ptr", to=CType("void")))
         if tag == "result":
@@ -1403,7 +1464,9 @@ class Translator:
                 params, body = self.prog.macros[name]
                 if params is not None:
                     fail(w, f"function-like macro {name} used as a term")
-                return f"(({INT128})({name}))", LT("int")
+                m = re.fullmatch(r"\(?\s*(0[xX][0-9a-fA-F]+|[0-9]+)[uUlL]*\s*\)?", body.strip())
+                v = int(m.group(1), 0) if m else None
+                return f"(({INT128})({name}))", LT("int", rng=(v, v) if m else None)
             if name in self.prog.cvars:
                 # a C global variable: an array is its first element's address (the same in
                 # every state), a scalar is read in the context's state
@@ -1458,7 +1521,9 @@ class Translator:
                 return self.ptr_arith(b, lb, op, a), lb
             self.want(la, "int", e[2], w)
             self.want(lb, "int", e[3], w)
-            return f"({a} {op} {b})", LT("int")
+            if op in ("/", "%"):
+                return self.divide(op, a, la, b, lb)
+            return f"({a} {op} {b})", LT("int", rng=rng_op(op, la.rng, lb.rng))
         if tag == "cast":
             t = self.ctype_of_words(e[1], w)
             c, lt = self.term(e[2], ctx)
@@ -1477,6 +1542,8 @@ class Translator:
             b, lb = self.term(e[3], ctx)
             if la.kind != lb.kind:
                 fail(w, f"branches of ?: have different types ({self.show(e)})")
+            if la.kind == "int":
+                return f"({c} ? {a} : {b})", LT("int", rng=rng_hull(la.rng, lb.rng))
             return f"({c} ? {a} : {b})", la
         if tag == "minmax":
             a, la = self.term(e[2], ctx)
@@ -1484,13 +1551,57 @@ class Translator:
             self.want(la, "int", e[2], w)
             self.want(lb, "int", e[3], w)
             fn = "mtc_min" if e[1] == "min" else "mtc_max"
-            return f"{fn}({a}, {b})", LT("int")
+            r = None
+            if la.rng and lb.rng:
+                pick = min if e[1] == "min" else max
+                r = (pick(la.rng[0], lb.rng[0]), pick(la.rng[1], lb.rng[1]))
+            return f"{fn}({a}, {b})", LT("int", rng=r)
         if tag in ("rel", "and", "or", "not", "implies", "equiv", "valid", "separated",
                    "forall", "exists"):
             return self.pred(e, ctx), LT("bool")
         if tag == "range":
             fail(w, f"a range is only allowed in \\valid, \\separated and assigns ({self.show(e)})")
         fail(w, f"unsupported term {self.show(e)}")
+
+    def divide(self, op, a, la, b, lb):
+        """a / b or a % b on ACSL integers, computed at the narrowest exact width.
+        ACSL division truncates toward zero, as C's does, so for operands that a C type of
+        width W holds, the W-bit operation gives the same value as the __int128 one. CBMC's
+        circuit for a 128-bit signed division is many times that of a 64-bit one, and when the
+        kernel divides the same values at the same width the solver can share one circuit.
+          * both ranges known: the narrowest of unsigned 32, unsigned 64 and signed 64 bits
+            that holds them, without a check; __int128 when none does and a range can leave
+            the signed and unsigned 64-bit ranges (e.g. ticks * 10^6);
+          * a dividend known to be in (-2^64, 2^64) but not of one sign (a difference of two
+            64-bit values) over a known non-negative divisor: unsigned 64 bits, behind an
+            assertion that the dividend is not negative;
+          * a range not known (a logic function's integer parameter): signed 64 bits, behind an
+            assertion that both operands are in [-2^63, 2^63).
+        An operand outside its assertion's range is reported as a failed check of the harness
+        (mtc_udiv64 / mtc_sdiv64 in proofs/cbmc/lib/mtc.h), never computed wrongly."""
+        r = rng_op(op, la.rng, lb.rng)
+        out = LT("int", rng=r)
+
+        def within(rg, lo, hi):
+            return rg is not None and lo <= rg[0] and rg[1] <= hi
+
+        ra, rb = la.rng, lb.rng
+        if within(ra, 0, U32_MAX) and within(rb, 0, U32_MAX):
+            return f"(({INT128})((unsigned int)({a}) {op} (unsigned int)({b})))", out
+        if within(ra, 0, U64_MAX) and within(rb, 0, U64_MAX):
+            return (f"(({INT128})((unsigned long long)({a}) {op} (unsigned long long)({b})))",
+                    out)
+        if within(ra, I64_MIN, I64_MAX) and within(rb, I64_MIN, I64_MAX):
+            return f"(({INT128})((long long)({a}) {op} (long long)({b})))", out
+        if ra is not None and rb is not None:
+            if within(ra, -U64_MAX, U64_MAX) and within(rb, 0, U64_MAX):
+                fn = "mtc_udiv64" if op == "/" else "mtc_umod64"
+                return f"{fn}({a}, {b})", out
+            return f"({a} {op} {b})", out
+        if any(rg is not None and not within(rg, I64_MIN, I64_MAX) for rg in (ra, rb)):
+            return f"({a} {op} {b})", out
+        fn = "mtc_sdiv64" if op == "/" else "mtc_smod64"
+        return f"{fn}({a}, {b})", out
 
     def want(self, lt, kind, e, w):
         if lt.kind == "bool" and kind == "int":

@@ -16,6 +16,9 @@
    globals in contracts, on a second sample: proved, and a changed scalar or struct field is
    caught under the clause's label.
    Skipped (with a message) when frama-c is not installed; SKIP_WP=1 skips the WP half.
+7. Divisions at the narrowest exact width (class Division): the generated width for each kind
+   of operand range, exact quotients and remainders (negative operands included), wrong
+   quotients caught, and an operand outside a checked range reported, not computed wrongly.
 6. The keys of the recorded verdicts (CBMC coverage records, B10; WP module records, W5): equal
    for copies of the tree at two other paths and for the repository itself, changed by an
    option and by a comment line added to a header.
@@ -378,6 +381,151 @@ class TwoState(unittest.TestCase):
                                                      "x->n = x->n / 2u;\n    x->p[2].b[1]++;"))
         self.assertIn("mt_box_f: ensures kept", failed)
         self.assertNotIn("mt_box_f: ensures counted", failed)
+
+
+DIV_H = r"""
+#include <stdint.h>
+
+/*@ logic integer MtHalf(integer v) = v / 2;
+    logic integer MtRem(integer v) = v % 1000;
+*/
+
+/*@ requires nz: b >= 1;
+    assigns \nothing;
+    ensures q: \result == a / b;
+    ensures r: a % b == a - \result * b;
+*/
+uint32_t mt_q32(uint32_t a, uint32_t b);
+
+/*@ requires nz: c >= 1;
+    requires ord: a >= b;
+    assigns \nothing;
+    ensures q: \result == (a - b) / c;
+*/
+uint64_t mt_q64(uint64_t a, uint64_t b, uint64_t c);
+
+/*@ assigns \nothing;
+    ensures q: \result == x / 7;
+    ensures rem: MtRem(x) == x - (x / 1000) * 1000;
+*/
+int32_t mt_qs(int32_t x);
+
+/*@ assigns \nothing;
+    ensures half: \result == MtHalf(x);
+*/
+int64_t mt_half(int64_t x);
+
+/*@ assigns \nothing;
+    ensures half: \result == MtHalf(x * 2);
+*/
+uint64_t mt_half_u(uint64_t x);
+
+/*@ requires nz: h >= 1;
+    assigns \nothing;
+    ensures wide: \result <= (t * 1000) / h;
+*/
+uint64_t mt_wide(uint64_t t, uint32_t h);
+"""
+
+DIV_C = r"""
+#include "mt_div.h"
+
+uint32_t mt_q32(uint32_t a, uint32_t b) { return a / b; }
+uint64_t mt_q64(uint64_t a, uint64_t b, uint64_t c) { return (a - b) / c; }
+int32_t mt_qs(int32_t x) { return (int32_t)((int64_t)x / 7); }
+int64_t mt_half(int64_t x) { return x / 2; }
+uint64_t mt_half_u(uint64_t x) { return x; }
+"""
+
+DIV_HARNESS = r"""
+#include "mtc_logic.h"
+#include "mt_q32_contract.h"
+#include "mt_q64_contract.h"
+#include "mt_qs_contract.h"
+#include "mt_half_contract.h"
+#include "mt_half_u_contract.h"
+
+/* Concrete operands: the test is about the values the translation computes (widths, signs,
+ * truncation toward zero, 64-bit extremes), not about the solver. */
+#define Q32(a, b) if (mtc_pre_mt_q32(a, b)) { mtc_post_mt_q32(a, b, mt_q32(a, b)); }
+#define Q64(a, b, c) if (mtc_pre_mt_q64(a, b, c)) { mtc_post_mt_q64(a, b, c, mt_q64(a, b, c)); }
+#define QS(x) if (mtc_pre_mt_qs(x)) { mtc_post_mt_qs(x, mt_qs(x)); }
+#define HALF(x) if (mtc_pre_mt_half(x)) { mtc_post_mt_half(x, mt_half(x)); }
+#define HALF_U(x) if (mtc_pre_mt_half_u(x)) { mtc_post_mt_half_u(x, mt_half_u(x)); }
+
+void harness(void)
+{
+    mtc_snapshot();
+    Q32(7u, 2u) Q32(5u, 7u) Q32(0xFFFFFFFFu, 1u) Q32(0xFFFFFFFFu, 0xFFFFFFFFu)
+    Q64(0xFFFFFFFFFFFFFFFFull, 0ull, 3ull) Q64(10ull, 3ull, 7ull) Q64(10ull, 10ull, 1ull)
+    QS(-13) QS(13) QS(-1) QS(-2147483647 - 1) QS(0x7FFFFFFF) QS(-1999)
+    HALF(-3) HALF(5) HALF(-9223372036854775807ll - 1) HALF(0x7FFFFFFFFFFFFFFFll)
+    HALF_U(5ull) HALF_U(0x3FFFFFFFFFFFFFFFull)
+    HALF_U(0x4000000000000000ull) /* MtHalf(2^63): outside the checked signed range */
+}
+"""
+
+
+class Division(unittest.TestCase):
+    """ACSL / and % at the narrowest exact width (Translator.divide): unsigned 32 and 64 bits
+    and signed 64 bits where the operands' ranges are known, a checked 64-bit division where
+    they are not (logic-function parameters, differences), __int128 where they can leave 64
+    bits. Negative operands keep ACSL's truncation; a value outside the checked range is a
+    failed check under its own description, not a wrong quotient."""
+
+    def setUp(self):
+        self.dir = os.path.join(WORK, "division", self.id().split(".")[-1])
+        shutil.rmtree(self.dir, ignore_errors=True)
+        self.src = os.path.join(self.dir, "src")
+        self.out = os.path.join(self.dir, "gen")
+        write(os.path.join(self.src, "mt_div.h"), DIV_H)
+        write(os.path.join(self.dir, "harness.c"), DIV_HARNESS)
+
+    def run_div(self, impl=DIV_C):
+        write(os.path.join(self.src, "mt_div.c"), impl)
+        t = translate([os.path.join(self.src, "mt_div.h")], [self.src], self.out)
+        self.assertEqual(t.returncode, 0, t.stderr)
+        srcs = [os.path.join(self.dir, "harness.c"), os.path.join(self.src, "mt_div.c"),
+                os.path.join(LIB, "mtc.c"), os.path.join(LIB, "ghost.c")]
+        return cbmc_failures(srcs, [self.src, self.out, LIB], self.dir,
+                             ["--external-sat-solver", "cadical"] if shutil.which("cadical") else [])
+
+    def gen(self, name):
+        with open(os.path.join(self.out, name)) as f:
+            return f.read()
+
+    def test_widths(self):
+        t = translate([os.path.join(self.src, "mt_div.h")], [self.src], self.out)
+        self.assertEqual(t.returncode, 0, t.stderr)
+        self.assertIn("(unsigned int)(((__int128)(a))) / (unsigned int)(((__int128)(b)))",
+                      self.gen("mt_q32_contract.h"))                   # uint32: unsigned 32
+        self.assertIn("mtc_udiv64(", self.gen("mt_q64_contract.h"))       # a difference
+        self.assertIn("(long long)(", self.gen("mt_qs_contract.h"))       # int32: signed 64
+        self.assertIn("mtc_sdiv64(", self.gen("mtc_logic.h"))             # MtHalf(v): unknown
+        self.assertIn("mtc_smod64(", self.gen("mtc_logic.h"))             # MtRem(v): unknown
+        wide = self.gen("mt_wide_contract.h")
+        self.assertNotIn("mtc_udiv64", wide)
+        self.assertNotIn("unsigned long long)", wide)
+        self.assertRegex(wide, r"\(\(__int128\)1000ull\)\) / \(\(__int128\)\(h\)\)")
+
+    def test_exact(self):
+        failed, total = self.run_div()
+        # the only failures: MtHalf(x * 2) for x = 2^62, whose operand 2^63 leaves the checked
+        # range: the range check, the conversion check of the 64-bit operand, and the ensures
+        # clause that the out-of-range quotient then fails; every other quotient is exact
+        self.assertEqual(sorted(failed), [
+            "arithmetic overflow on signed type conversion in (signed long long int)a",
+            "mt_half_u: ensures half",
+            "spec division: operands in [-2^63, 2^63)"])
+        self.assertGreater(total, 20)
+
+    def test_wrong_quotients_caught(self):
+        bad = (DIV_C.replace("return a / b;", "return a / b + (a == 7u);")
+               .replace("return (int32_t)((int64_t)x / 7);", "return (x < 0) ? (int32_t)(((int64_t)x - 6) / 7) : (int32_t)((int64_t)x / 7);")
+               .replace("return (a - b) / c;", "return (a - b) / c - (a == b + c);"))
+        failed, _ = self.run_div(bad)
+        for lab in ("mt_q32: ensures q", "mt_q64: ensures q", "mt_qs: ensures q"):
+            self.assertIn(lab, failed)
 
 
 def copy_kernel(dst):

@@ -119,6 +119,42 @@ static inline int mtc_separated(const void *p, __int128 plo, __int128 phi, __int
     return ps + (phi - plo + 1) * pesz <= qs || qs + (qhi - qlo + 1) * qesz <= ps;
 }
 
+/* ACSL a / b and a % b at 64 bits (tools/acsl2cbmc.py, Translator.divide), for operands whose
+ * range the translator cannot bound: exact when the operands are in the asserted range (ACSL
+ * truncates toward zero, as C does); an operand outside it is a failed check of the harness.
+ * A zero divisor is reported by CBMC's division-by-zero check, as for any other division.
+ * udiv: a dividend that is a difference of 64-bit values, over a non-negative 64-bit divisor. */
+#define MTC_U64_MAX ((__int128)0xFFFFFFFFFFFFFFFFull)
+#define MTC_I64_MIN (-(__int128)0x8000000000000000ull)
+#define MTC_I64_MAX ((__int128)0x7FFFFFFFFFFFFFFFull)
+static inline __int128 mtc_udiv64(__int128 a, __int128 b)
+{
+    __CPROVER_assert(a >= 0 && a <= MTC_U64_MAX && b >= 0 && b <= MTC_U64_MAX,
+                     "spec division: operands in [0, 2^64)");
+    return (__int128)((unsigned long long)a / (unsigned long long)b);
+}
+
+static inline __int128 mtc_umod64(__int128 a, __int128 b)
+{
+    __CPROVER_assert(a >= 0 && a <= MTC_U64_MAX && b >= 0 && b <= MTC_U64_MAX,
+                     "spec division: operands in [0, 2^64)");
+    return (__int128)((unsigned long long)a % (unsigned long long)b);
+}
+
+static inline __int128 mtc_sdiv64(__int128 a, __int128 b)
+{
+    __CPROVER_assert(a >= MTC_I64_MIN && a <= MTC_I64_MAX && b >= MTC_I64_MIN && b <= MTC_I64_MAX,
+                     "spec division: operands in [-2^63, 2^63)");
+    return (__int128)((long long)a / (long long)b);
+}
+
+static inline __int128 mtc_smod64(__int128 a, __int128 b)
+{
+    __CPROVER_assert(a >= MTC_I64_MIN && a <= MTC_I64_MAX && b >= MTC_I64_MIN && b <= MTC_I64_MAX,
+                     "spec division: operands in [-2^63, 2^63)");
+    return (__int128)((long long)a % (long long)b);
+}
+
 static inline __int128 mtc_min(__int128 a, __int128 b)
 {
     return a < b ? a : b;
