@@ -1214,7 +1214,8 @@ def int_range(ctype):
     if ctype.kind == "bool":
         return (0, 1)
     if ctype.kind == "enum":
-        return (-(1 << 31), (1 << 31) - 1)
+        # int or unsigned int, as the compiler chooses for the enumeration's values
+        return (-(1 << 31), (1 << 32) - 1)
     words = (ctype.spell or "").split()
     if ctype.kind != "int" or not words:
         return None
