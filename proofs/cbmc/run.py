@@ -184,6 +184,10 @@ def run_one(name, big, out_root, timeout, records, mode):
         return entry
     r = parse_result(os.path.join(d, "result.json"))
     entry.update({k: r[k] for k in ("properties", "failed", "failures")})
+    if r["failed"] or r["status"] != "success":
+        # a failed property fails the harness whatever its coverage: no coverage run
+        entry.update({"passed": False, "coverage_source": "not run (a property failed)"})
+        return entry
     key = cover_key(name, big)
     rec = records.get(name) if not big else None
     if mode != "fresh" and key and rec and rec.get("key") == key:
@@ -265,6 +269,7 @@ def main():
     # without one goes first), so the 2 workers do not end on one long harness while the other
     # core idles. The order changes no verdict; the summary lists the harnesses by name.
     names.sort(key=lambda n: (-records.get(n, {}).get("property_cpu_seconds", 1e9), n))
+    saved = {}
     t0 = time.monotonic()
     with ThreadPoolExecutor(max_workers=max(1, args.j)) as ex:
         futs = [ex.submit(run_one, n, args.max, out_root, args.timeout, records, mode)
@@ -277,7 +282,7 @@ def main():
             reach = e.get("reach", [])
             rec = e.pop("_record", None)
             if rec and mode == "save":
-                records[n] = rec
+                saved[n] = rec
             src = {"replayed": " (replayed)", "fresh": " (fresh)   "}.get(
                 e.get("coverage_source"), "")
             print(f"{status} {n:28s} {e['properties']:6d} props {e['failed']:3d} failed "
@@ -304,7 +309,9 @@ def main():
         results.append({"function": n, "passed": False, "pending": pending[n], "properties": 0,
                         "failed": 0, "coverage": 0.0, "seconds": 0.0, "cpu_seconds": 0.0})
     if mode == "save":
-        save_records(records)
+        # merged into the file as it is now, so runs of different harnesses side by side
+        # do not drop each other's records
+        save_records(dict(load_records(), **saved))
     results.sort(key=lambda e: e["function"])
     passed = sum(e["passed"] for e in results)
     replayed = sum(e.get("coverage_source") == "replayed" for e in results)
