@@ -1579,7 +1579,9 @@ class Translator:
           * a range not known (a logic function's integer parameter): signed 64 bits, behind an
             assertion that both operands are in [-2^63, 2^63).
         An operand outside its assertion's range is reported as a failed check of the harness
-        (mtc_udiv64 / mtc_sdiv64 in proofs/cbmc/lib/mtc.h), never computed wrongly."""
+        (mtc_udiv64 / mtc_sdiv64 in proofs/cbmc/lib/mtc.h), never computed wrongly. Every
+        narrowing cast is also under CBMC's --conversion-check, so even a wrong range (say, a
+        macro whose value differs in the harness build) shows as a failed check."""
         r = rng_op(op, la.rng, lb.rng)
         out = LT("int", rng=r)
 
