@@ -114,7 +114,10 @@ def main():
             cb_log = os.path.join(work, "cbmc.log")
             cb_rc = run(["make", "--no-print-directory", target], work, cb_log)
             with open(cb_log, encoding="utf-8", errors="replace") as f:
-                cb_kill = cb_rc != 0 and "VERIFICATION FAILED" in f.read()
+                cb_text = f.read()
+            cb_kill = cb_rc != 0 and "VERIFICATION FAILED" in cb_text
+            if not cb_kill and ("timeout: killed" in cb_text or "harnesses passed" not in cb_text):
+                cb_kill = None  # no verdict (a time-out or a build error), not an acceptance
         k = bool(wp_kill) or bool(cb_kill)
         killed += 1 if k else 0
         secs = time.time() - t0
