@@ -206,8 +206,8 @@ def run_one(name, big, out_root, timeout, records, mode):
                            os.path.join(PROOFS, name, f"{name}_harness.c"))
         entry["coverage_source"] = "fresh"
     entry.update({k: c[k] for k in COVER_FIELDS})
-    entry["passed"] = (r["failed"] == 0 and r["status"] == "success" and
-                       c["coverage"] >= COVERAGE_MIN and all(x["reached"] for x in c["reach"]))
+    # the properties passed (a failed one returned above): coverage and witnesses decide
+    entry["passed"] = c["coverage"] >= COVERAGE_MIN and all(x["reached"] for x in c["reach"])
     if entry["passed"] and entry["coverage_source"] == "fresh" and key and not big:
         entry["_record"] = dict({k: c[k] for k in COVER_FIELDS}, key=key,
                                 recorded=time.strftime("%Y-%m-%d"),
