@@ -649,19 +649,17 @@ uint32_t mt_sched_load_permille(const mt_sched_t *s)
 
 void mt_sched_task_report(const mt_sched_t *s, uint32_t i, mt_task_report_t *r)
 {
-    const mt_task_state_t *e = &s->st[i];
-
     r->name = s->tasks[i].name;
-    r->runs = e->runs;
-    r->min_us = e->min_us;
-    r->max_us = e->max_us;
-    r->mean_us = (e->runs == 0u) ? 0u : clamp_u32(e->total_us / e->runs);
-    r->overruns = e->overruns;
-    r->slips = e->slips;
-    r->not_achieved = e->not_achieved;
-    r->budget_skips = e->budget_skips;
-    r->pending = (s->tick - e->last_run) / e->interval;
-    r->interval = e->interval;
+    r->runs = s->st[i].runs;
+    r->min_us = s->st[i].min_us;
+    r->max_us = s->st[i].max_us;
+    r->mean_us = (s->st[i].runs == 0u) ? 0u : clamp_u32(s->st[i].total_us / s->st[i].runs);
+    r->overruns = s->st[i].overruns;
+    r->slips = s->st[i].slips;
+    r->not_achieved = s->st[i].not_achieved;
+    r->budget_skips = s->st[i].budget_skips;
+    r->pending = (s->tick - s->st[i].last_run) / s->st[i].interval;
+    r->interval = s->st[i].interval;
 }
 
 void mt_sched_loop_report(const mt_sched_t *s, mt_loop_report_t *r)
