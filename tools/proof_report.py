@@ -114,6 +114,9 @@ def main():
             # (pending harnesses were not run: they have no coverage and are listed as failures)
             "min_coverage": min([r.get("coverage", 0.0) for r in cbmc.get("results", [])
                                  if not r.get("pending")] or [0.0]),
+            "record_mode": cbmc.get("record_mode", "?"),
+            "properties_fresh": cbmc.get("properties_fresh", 0),
+            "properties_replayed": cbmc.get("properties_replayed", 0),
             "coverage_fresh": cbmc.get("coverage_fresh", 0),
             "coverage_replayed": cbmc.get("coverage_replayed", 0),
         }
@@ -267,11 +270,13 @@ def main():
     if summary["cbmc"]:
         c = summary["cbmc"]
         md.append(f"- CBMC: {c['passed']}/{c['harnesses']} harnesses, lowest coverage of a harness run {c['min_coverage']:.1f}%; "
-                  "every property run ran in this run; coverage verdicts: "
-                  f"{c['coverage_fresh']} from coverage runs made now, {c['coverage_replayed']} replayed "
-                  "from proofs/cbmc/coverage-record.json for byte-identical preprocessed inputs, "
-                  "options and tool versions (assumption B10; `make prove CBMC_COVERAGE=fresh` runs "
-                  "every coverage run)")
+                  f"property verdicts: {c['properties_fresh']} from property runs made now, "
+                  f"{c['properties_replayed']} replayed; coverage verdicts: "
+                  f"{c['coverage_fresh']} from coverage runs made now, {c['coverage_replayed']} replayed. "
+                  "Replayed verdicts come from proofs/cbmc/records.json, for byte-identical "
+                  "preprocessed inputs, options and tool versions (assumption B10; CBMC_RECORD="
+                  f"{c['record_mode']}; `make prove CBMC_RECORD=properties` runs every property run, "
+                  "`CBMC_RECORD=fresh` every run)")
     if summary["tla"]:
         t = summary["tla"]
         md.append(f"- TLC: {t['passed']}/{t['models']} model configurations as expected")

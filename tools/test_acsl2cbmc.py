@@ -19,9 +19,12 @@
 7. Divisions at the narrowest exact width (class Division): the generated width for each kind
    of operand range, exact quotients and remainders (negative operands included), wrong
    quotients caught, and an operand outside a checked range reported, not computed wrongly.
-6. The keys of the recorded verdicts (CBMC coverage records, B10; WP module records, W5): equal
-   for copies of the tree at two other paths and for the repository itself, changed by an
-   option and by a comment line added to a header.
+6. The keys of the recorded verdicts (CBMC property and coverage records, B10; WP module
+   records, W5): equal for copies of the tree at two other paths and for the repository itself,
+   changed by an option and by a comment line added to a header; the property key also by a
+   comment in Makefile.common, which leaves the coverage key as it is. run.py's replay (RecordReplay):
+   recorded from a passing run, replayed only for its digest, and a record that disagrees with
+   a fresh property run (CBMC_RECORD=properties) fails the harness.
 
 Everything runs on copies under build/proof/cbmc/test/; kernel/ is never modified.
 """
@@ -654,9 +657,9 @@ class RecordKeys(unittest.TestCase):
         copy_for_keys(self.a)
         copy_for_keys(self.b)
 
-    def cover_key(self, root, extra=()):
+    def cover_key(self, root, extra=(), target="cover-key"):
         p = subprocess.run(["make", "-s", "-C", os.path.join(root, "proofs", "cbmc", "proofs",
-                                                           "mt_bring_write"), "cover-key",
+                                                           "mt_bring_write"), target,
                             f"TOOLS_BIN={BIN}"] + list(extra),
                            capture_output=True, text=True)
         self.assertEqual(p.returncode, 0, p.stderr)
@@ -695,6 +698,97 @@ class RecordKeys(unittest.TestCase):
                             "an option is not in the key")
         prepend(os.path.join(self.b, "kernel", "spec", "mt_spec_ring.h"), "/* moved */\n")
         self.assertNotEqual(k_a, self.wp_key(self.b, flags), "a spec header change is not in the key")
+
+    @unittest.skipUnless(os.path.exists(os.path.join(BIN, "goto-cc")), "CBMC not installed")
+    def test_result_key(self):
+        """The property run's key: like the coverage key, and it also covers Makefile.common
+        (whose recipes build and run the binary); the coverage key does not, and it covers the
+        coverage binary's COVER_DEFINES."""
+        def key(root, extra=()):
+            return self.cover_key(root, extra, target="result-key")
+        k_a = key(self.a)
+        self.assertEqual(k_a, key(self.b), "the key depends on the location")
+        self.assertEqual(k_a, key(ROOT), "a copy of the repository gives another key")
+        self.assertNotEqual(k_a, self.cover_key(self.a), "the two keys are the same digest")
+        self.assertNotEqual(k_a, key(self.a, ["UNWIND=7"]), "an option is not in the key")
+        self.assertNotEqual(self.cover_key(self.a),
+                            self.cover_key(self.a, ["COVER_DEFINES=-DMTC_COVER_ONLY"]),
+                            "the coverage binary's defines are not in the coverage key")
+        prepend(os.path.join(self.b, "proofs", "cbmc", "Makefile.common"), "# moved\n")
+        self.assertNotEqual(k_a, key(self.b), "Makefile.common is not in the property key")
+        self.assertEqual(self.cover_key(self.a), self.cover_key(self.b),
+                         "a comment in Makefile.common changed the coverage key")
+
+
+class RecordReplay(unittest.TestCase):
+    """proofs/cbmc/run.py's use of the verdict records (B10), on a copy of the tree and its
+    records, with the quickest harness: a passing run is recorded; a recorded verdict is
+    replayed only for its digest; CBMC_RECORD=properties runs the property run again and
+    fails a harness whose record disagrees with it."""
+    NAME = "mt_sem_valid"
+
+    def setUp(self):
+        self.root = os.path.join(WORK, "replay", "r")
+        copy_for_keys(self.root)
+        self.records = os.path.join(self.root, "proofs", "cbmc", "records.json")
+        self.out = os.path.join(self.root, "build", "proof", "cbmc", "proofs", self.NAME)
+
+    def run_py(self, mode):
+        env = dict(os.environ, TOOLS_BIN=BIN, CBMC_RECORD=mode)
+        p = subprocess.run([sys.executable, os.path.join(self.root, "proofs", "cbmc", "run.py"),
+                            self.NAME], capture_output=True, text=True, env=env)
+        with open(os.path.join(self.root, "build", "proof", "cbmc", "summary.json")) as f:
+            s = json.load(f)
+        return p.returncode, p.stdout + p.stderr, s, s["results"][0]
+
+    def record(self):
+        with open(self.records) as f:
+            return json.load(f)[self.NAME]
+
+    def tamper(self, **kw):
+        with open(self.records) as f:
+            recs = json.load(f)
+        recs[self.NAME].update(kw)
+        with open(self.records, "w") as f:
+            json.dump(recs, f)
+
+    @unittest.skipUnless(os.path.exists(os.path.join(BIN, "goto-cc")), "CBMC not installed")
+    def test_replay(self):
+        self.tamper(result_key="0" * 64, properties=0)
+        rc, out, s, e = self.run_py("save")
+        self.assertEqual(rc, 0, out)
+        self.assertEqual((e["property_source"], e["passed"]), ("fresh", True), out)
+        rec = self.record()
+        self.assertRegex(rec["result_key"], r"^[0-9a-f]{64}$")
+        self.assertEqual(rec["properties"], e["properties"])
+        self.assertGreater(rec["properties"], 0)
+
+        shutil.rmtree(self.out)
+        rc, out, s, e = self.run_py("replay")
+        self.assertEqual(rc, 0, out)
+        self.assertEqual((e["property_source"], e["coverage_source"]), ("replayed", "replayed"))
+        self.assertEqual((s["properties_replayed"], s["properties_fresh"]), (1, 0))
+        self.assertEqual(e["properties"], rec["properties"])
+        self.assertFalse(os.path.exists(os.path.join(self.out, "result.json")),
+                         "a replayed verdict ran CBMC")
+
+        rc, out, s, e = self.run_py("properties")
+        self.assertEqual(rc, 0, out)
+        self.assertEqual((e["property_source"], e["coverage_source"]), ("fresh", "replayed"))
+        self.assertTrue(os.path.exists(os.path.join(self.out, "result.json")))
+
+        self.tamper(properties=rec["properties"] + 1)
+        rc, out, s, e = self.run_py("properties")
+        self.assertEqual(rc, 1, out)
+        self.assertFalse(e["passed"])
+        self.assertIn("record disagrees", e.get("error", ""), out)
+
+        self.tamper(result_key="f" * 64)
+        rc, out, s, e = self.run_py("replay")
+        self.assertEqual(rc, 0, out)
+        self.assertEqual(e["property_source"], "fresh", "a record of other inputs was replayed")
+        self.assertEqual(e["properties"], rec["properties"])
+
 
 
 def main():

@@ -6,11 +6,13 @@
 #                        covers < 90 % of the kernel code it reaches, or a reachability
 #                        witness (MTC_REACH) is not reached. Writes build/proof/cbmc/summary.json.
 #   make cbmc-<fn>       one proof (same judgement), e.g. make cbmc-mt_bring_write
-#   CBMC_COVERAGE=       replay (default): a coverage verdict is replayed from
-#                        proofs/cbmc/coverage-record.json when the digest of its inputs is the
-#                        recorded one (assumption B10), else run; fresh: every coverage run is
-#                        run; save: as replay, and every fresh verdict of a passing harness is
-#                        recorded (e.g. make cbmc CBMC_COVERAGE=save)
+#   CBMC_RECORD=         replay (default): a property or coverage verdict is replayed from
+#                        proofs/cbmc/records.json when the digest of its run's inputs is the
+#                        recorded one (assumption B10), else run; properties: every property run
+#                        is run (and must agree with a record of the same digest), coverage
+#                        verdicts replayed (CI); fresh: every run is run; save: as replay, and
+#                        every fresh verdict of a passing harness is recorded
+#                        (make cbmc CBMC_RECORD=save)
 #   make cbmc-max        the capacity-maximum tier (ring capacities 2^30 - 1 and 2^30, 31-bit
 #                        indices): slow, run nightly; build/proof/cbmc/summary-max.json
 #   make cbmc-gen        only translate the ACSL contracts (build/proof/cbmc/gen/)

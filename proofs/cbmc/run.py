@@ -12,13 +12,16 @@
    least 90 %, and every MTC_REACH witness of the harness is reached (a harness whose
    assumptions are contradictory reports success with almost no coverage: this catches it).
 
-Coverage records (assumption B10): proofs/cbmc/coverage-record.json holds, per harness, the
-coverage verdict of a passing run and the digest of its inputs (`make cover-key` in the proof
-folder: tool versions, options, and the preprocessed sources). When the digest is unchanged the
-coverage run is replayed from the record; the property run always runs. CBMC_COVERAGE selects:
-  replay (default)  replay a record with the same digest, run the coverage run otherwise
-  fresh             run every coverage run
-  save              as replay, then record every coverage run made fresh by a passing harness
+Verdict records (assumption B10): proofs/cbmc/records.json holds, per harness, the verdicts of
+its last passing runs, each with the digest of that run's inputs (`make result-key` and `make
+cover-key` in the proof folder: tool versions, every option, and every source of the binary as
+goto-cc's preprocessor expands it). A run whose digest equals the recorded one is replayed from
+the record instead of being run again. CBMC_RECORD selects:
+  replay (default)  replay the property and coverage verdicts whose digest is unchanged
+  properties        run every property run (a record with the same digest must agree with it:
+                    same number of properties, none failed), replay coverage verdicts (CI)
+  fresh             run every property run and every coverage run
+  save              as replay, then record every run made fresh by a passing harness
 
 Writes build/proof/cbmc/summary.json ({"harnesses", "passed", "results": [{"function",
 "properties", "failed", "coverage", "seconds", ...}]}) and prints one line per harness.
@@ -147,7 +150,8 @@ def parse_coverage(path, harness_file):
 
 COVER_FIELDS = ("coverage", "kernel_goals", "kernel_covered", "goals", "goals_covered",
                 "uncovered", "reach")
-RECORD = os.path.join(HERE, "coverage-record.json")
+RECORD = os.path.join(HERE, "records.json")
+MODES = ("replay", "properties", "fresh", "save")
 
 
 def load_records():
@@ -165,32 +169,55 @@ def save_records(records):
         f.write("\n}\n")
 
 
-def cover_key(name, big):
-    p = subprocess.run(["make", "-s", "-C", os.path.join(PROOFS, name), "cover-key"] +
+def input_key(name, big, target):
+    """The digest of a run's inputs: target result-key (property run) or cover-key."""
+    p = subprocess.run(["make", "-s", "-C", os.path.join(PROOFS, name), target] +
                        (["CBMC_BIG=1"] if big else []), capture_output=True, text=True)
     key = p.stdout.strip()
     return key if p.returncode == 0 and re.fullmatch(r"[0-9a-f]{64}", key) else None
 
 
-def run_one(name, big, out_root, timeout, records, mode):
-    """Property run, then the coverage verdict: replayed from the record when the digest of
-    its inputs matches (mode replay/save, default tier), run otherwise."""
+def property_run(name, big, out_root, timeout, rec, key, mode):
+    """The property verdict: replayed from the record when the digest of its inputs matches
+    (modes replay and save), run otherwise. Returns (fields, wall s, cpu s); fields has
+    "passed" False and "error" or "failures" when it did not pass."""
+    if mode in ("replay", "save") and key and rec.get("result_key") == key:
+        return ({"properties": rec["properties"], "failed": 0, "failures": [],
+                 "property_source": "replayed",
+                 "property_recorded": rec.get("result_recorded", "?")}, 0.0, 0.0)
     rc, wall, cpu, out = run_make(name, big, "result", timeout)
     d = os.path.join(out_root, name)
-    entry = {"function": name, "properties": 0, "failed": 0, "coverage": 0.0,
-             "seconds": round(wall, 1), "cpu_seconds": round(cpu, 1)}
+    f = {"properties": 0, "failed": 0, "property_source": "fresh"}
     if rc != 0 or not os.path.exists(os.path.join(d, "result.json")):
-        entry.update({"error": out.strip()[-2000:], "passed": False})
-        return entry
+        f.update({"error": out.strip()[-2000:], "passed": False})
+        return f, wall, cpu
     r = parse_result(os.path.join(d, "result.json"))
-    entry.update({k: r[k] for k in ("properties", "failed", "failures")})
+    f.update({k: r[k] for k in ("properties", "failed", "failures")})
     if r["failed"] or r["status"] != "success":
+        f["passed"] = False
+    if key and rec.get("result_key") == key and (r["failed"] or
+                                                  r["properties"] != rec["properties"]):
+        # the same inputs gave another verdict than the record: B10's premise is broken
+        f.update({"passed": False, "error": f"record disagrees: recorded {rec['properties']} "
+                  f"properties, none failed; this run {r['properties']}, {r['failed']} failed"})
+    return f, wall, cpu
+
+
+def run_one(name, big, out_root, timeout, records, mode):
+    """Property verdict, then coverage verdict; each replayed from the record when the digest
+    of its inputs matches (see CBMC_RECORD), run otherwise."""
+    rec = records.get(name, {}) if not big else {}
+    rkey = input_key(name, big, "result-key")
+    p, wall, cpu = property_run(name, big, out_root, timeout, rec, rkey, mode)
+    entry = dict({"function": name, "coverage": 0.0, "seconds": round(wall, 1),
+                  "cpu_seconds": round(cpu, 1)}, **p)
+    if entry.get("passed") is False:
         # a failed property fails the harness whatever its coverage: no coverage run
-        entry.update({"passed": False, "coverage_source": "not run (a property failed)"})
+        entry.setdefault("coverage_source", "not run (the property run did not pass)")
         return entry
-    key = cover_key(name, big)
-    rec = records.get(name) if not big else None
-    if mode != "fresh" and key and rec and rec.get("key") == key:
+    d = os.path.join(out_root, name)
+    key = input_key(name, big, "cover-key")
+    if mode in ("replay", "properties", "save") and key and rec.get("key") == key:
         c = {k: rec[k] for k in COVER_FIELDS}
         entry["coverage_source"] = "replayed"
         entry["coverage_recorded"] = rec.get("recorded", "?")
@@ -208,11 +235,18 @@ def run_one(name, big, out_root, timeout, records, mode):
     entry.update({k: c[k] for k in COVER_FIELDS})
     # the properties passed (a failed one returned above): coverage and witnesses decide
     entry["passed"] = c["coverage"] >= COVERAGE_MIN and all(x["reached"] for x in c["reach"])
-    if entry["passed"] and entry["coverage_source"] == "fresh" and key and not big:
-        entry["_record"] = dict({k: c[k] for k in COVER_FIELDS}, key=key,
-                                recorded=time.strftime("%Y-%m-%d"),
-                                coverage_cpu_seconds=entry["coverage_cpu_seconds"],
-                                property_cpu_seconds=round(cpu, 1))
+    if entry["passed"] and not big:
+        new = dict(rec)
+        if entry["property_source"] == "fresh" and rkey:
+            new.update(result_key=rkey, properties=entry["properties"],
+                       result_recorded=time.strftime("%Y-%m-%d"),
+                       property_cpu_seconds=round(cpu, 1))
+        if entry["coverage_source"] == "fresh" and key:
+            new.update({k: c[k] for k in COVER_FIELDS}, key=key,
+                       recorded=time.strftime("%Y-%m-%d"),
+                       coverage_cpu_seconds=entry["coverage_cpu_seconds"])
+        if new != rec:
+            entry["_record"] = new
     return entry
 
 
@@ -258,9 +292,9 @@ def main():
     open(os.path.join(ROOT, "build/proof/cbmc/gen/.stamp"), "a").close()
     os.utime(os.path.join(ROOT, "build/proof/cbmc/gen/.stamp"))
 
-    mode = os.environ.get("CBMC_COVERAGE", "replay") or "replay"
-    if mode not in ("replay", "fresh", "save"):
-        print(f"cbmc: CBMC_COVERAGE={mode}: expected replay, fresh or save", file=sys.stderr)
+    mode = os.environ.get("CBMC_RECORD", "replay") or "replay"
+    if mode not in MODES:
+        print(f"cbmc: CBMC_RECORD={mode}: expected {', '.join(MODES)}", file=sys.stderr)
         return 2
     records = load_records()
     tier = "proofs-max" if args.max else "proofs"
@@ -285,7 +319,9 @@ def main():
                 saved[n] = rec
             src = {"replayed": " (replayed)", "fresh": " (fresh)   "}.get(
                 e.get("coverage_source"), "")
-            print(f"{status} {n:28s} {e['properties']:6d} props {e['failed']:3d} failed "
+            psrc = {"replayed": " (replayed)", "fresh": " (fresh)   "}.get(
+                e.get("property_source"), "")
+            print(f"{status} {n:28s} {e['properties']:6d} props {e['failed']:3d} failed{psrc} "
                   f"coverage {e['coverage']:5.1f}% ({e.get('kernel_covered', 0)}/"
                   f"{e.get('kernel_goals', 0)}){src}  witnesses "
                   f"{sum(x['reached'] for x in reach)}/{len(reach)}  "
@@ -315,7 +351,10 @@ def main():
     results.sort(key=lambda e: e["function"])
     passed = sum(e["passed"] for e in results)
     replayed = sum(e.get("coverage_source") == "replayed" for e in results)
-    summary = {"harnesses": len(results), "passed": passed,
+    p_replayed = sum(e.get("property_source") == "replayed" for e in results)
+    summary = {"harnesses": len(results), "passed": passed, "record_mode": mode,
+               "properties_replayed": p_replayed,
+               "properties_fresh": sum(e.get("property_source") == "fresh" for e in results),
                "coverage_replayed": replayed,
                "coverage_fresh": sum(e.get("coverage_source") == "fresh" for e in results),
                "tier": "max" if args.max else "default",
@@ -324,9 +363,11 @@ def main():
         ROOT, "build/proof/cbmc", "summary-max.json" if args.max else "summary.json")
     with open(path, "w") as f:
         json.dump(summary, f, indent=1)
-    print(f"cbmc: {passed}/{len(results)} harnesses passed in {total:.0f}s; coverage verdicts: "
-          f"{summary['coverage_fresh']} run, {replayed} replayed from "
-          f"{os.path.relpath(RECORD, ROOT)} (assumption B10) -> {os.path.relpath(path, ROOT)}")
+    print(f"cbmc: {passed}/{len(results)} harnesses passed in {total:.0f}s; property verdicts: "
+          f"{summary['properties_fresh']} run, {p_replayed} replayed; coverage verdicts: "
+          f"{summary['coverage_fresh']} run, {replayed} replayed; records: "
+          f"{os.path.relpath(RECORD, ROOT)} (assumption B10, CBMC_RECORD={mode}) -> "
+          f"{os.path.relpath(path, ROOT)}")
     return 0 if passed == len(results) and not missing else 1
 
 
