@@ -22,9 +22,9 @@
 6. The keys of the recorded verdicts (CBMC property and coverage records, B10; WP module
    records, W5): equal for copies of the tree at two other paths and for the repository itself,
    changed by an option and by a comment line added to a header; the property key also by a
-   comment in Makefile.common, which leaves the coverage key as it is. run.py's replay (RecordReplay):
-   recorded from a passing run, replayed only for its digest, and a record that disagrees with
-   a fresh property run (CBMC_RECORD=properties) fails the harness.
+   comment in Makefile.common, which leaves the coverage key as it is. run.py's replay
+   (RecordReplay): recorded from a passing run, replayed only for its digest, and a record
+   that disagrees with a fresh property run (CBMC_RECORD=properties) fails the harness.
 
 Everything runs on copies under build/proof/cbmc/test/; kernel/ is never modified.
 """
@@ -788,7 +788,6 @@ class RecordReplay(unittest.TestCase):
         self.assertEqual(rc, 0, out)
         self.assertEqual(e["property_source"], "fresh", "a record of other inputs was replayed")
         self.assertEqual(e["properties"], rec["properties"])
-
 
 
 def main():
