@@ -1209,6 +1209,15 @@ I64_MIN = -(1 << 63)
 I64_MAX = (1 << 63) - 1
 
 
+# A C integer literal's digits: hexadecimal, octal (a leading 0) or decimal.
+INT_LIT = r"(0[xX][0-9a-fA-F]+|0[0-7]*|[1-9][0-9]*)"
+
+
+def int_value(digits):
+    """The value of INT_LIT's digits, read as C reads them."""
+    return int(digits, 16 if digits[:2] in ("0x", "0X") else 8 if digits[0] == "0" else 10)
+
+
 def int_range(ctype):
     """Bounds of a C integer type (x86_64, LP64), or None."""
     if ctype.kind == "bool":
@@ -1336,13 +1345,15 @@ class Translator:
 
     # -- leaves -----------------------------------------------------------------------------
     def num(self, text, where):
-        m = re.fullmatch(r"(0[xX][0-9a-fA-F]+|[0-9]+)([uUlL]*)", text)
+        """An integer literal: its C text and its value (hexadecimal, octal or decimal, as C)."""
+        m = re.fullmatch(INT_LIT + r"[uUlL]*", text)
         if not m:
             fail(where, f"unsupported number {text!r}")
-        v = int(m.group(1), 0)
+        digits = m.group(1)
+        v = int_value(digits)
         if v > 0xFFFFFFFFFFFFFFFF:
             fail(where, f"literal {text} does not fit in 64 bits")
-        return f"(({INT128}){m.group(1)}ull)"
+        return f"(({INT128}){digits}ull)", v
 
     def widen(self, cexpr, ctype):
         """C value of a machine type -> logic value."""
@@ -1434,8 +1445,7 @@ class Translator:
         w = ctx.where
         tag = e[0]
         if tag == "num":
-            c = self.num(e[1], w)
-            v = int(re.match(r"0[xX][0-9a-fA-F]+|[0-9]+", e[1]).group(0), 0)
+            c, v = self.num(e[1], w)
             return c, LT("int", rng=(v, v))
         if tag == "true":
             return f"(({INT128})1)", LT("int", rng=(1, 1))
@@ -1465,8 +1475,8 @@ class Translator:
                 params, body = self.prog.macros[name]
                 if params is not None:
                     fail(w, f"function-like macro {name} used as a term")
-                m = re.fullmatch(r"\(?\s*(0[xX][0-9a-fA-F]+|[0-9]+)[uUlL]*\s*\)?", body.strip())
-                v = int(m.group(1), 0) if m else None
+                m = re.fullmatch(r"\(?\s*" + INT_LIT + r"[uUlL]*\s*\)?", body.strip())
+                v = int_value(m.group(1)) if m else None
                 return f"(({INT128})({name}))", LT("int", rng=(v, v) if m else None)
             if name in self.prog.cvars:
                 # a C global variable: an array is its first element's address (the same in
