@@ -4,9 +4,11 @@
  * @brief Timer and IO proc sets (see mt/proc.h).
  */
 #include "mt/proc.h"
+#include "mt_div.h"
 
 #include "mt_atomic.h"
 #include "mt_invoke.h"
+#include "mt_spec_arith.h"
 
 void mt_proc_set_init(mt_proc_set_t *p)
 {
@@ -155,14 +157,19 @@ mt_status_t mt_proc_dispatch(mt_proc_set_t *p)
 uint32_t mt_proc_period_next(uint64_t *deadline, uint64_t now, uint32_t period_us)
 {
     uint64_t next = *deadline + period_us;
+    uint64_t late;
     uint64_t missed;
 
     if (next > now) {
         *deadline = next;
         return 0u;
     }
-    missed = (now - *deadline) / period_us;
-    *deadline = *deadline + ((missed + 1u) * period_us);
+    /* late periods: the next boundary after now is now + (period - late % period), which
+     * equals old + (missed + 1) * period (lemma MtModStep: it is on the grid) and needs no
+     * product that could overflow */
+    late = now - *deadline;
+    missed = mt_udiv_u64(late, period_us);
+    *deadline = now + (period_us - mt_umod_u64(late, period_us));
     return (missed > 0xFFFFFFFFu) ? 0xFFFFFFFFu : (uint32_t)missed;
 }
 

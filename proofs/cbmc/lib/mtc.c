@@ -95,3 +95,35 @@ bool mtc_nondet_bool(void)
     uint8_t v = mtc_nondet_u8();
     return v != 0u;
 }
+
+#if defined(MTC_DIV_MODEL)
+/* The model of unsigned 64-bit division (assumption B11). q = n / d and r = n % d are the
+ * values of two uninterpreted functions of (n, d), constrained by C's definition of unsigned
+ * division (C11 6.5.5): q * d + r == n and r < d. For d >= 1 exactly one pair satisfies
+ * it, the operators' values, so the assumption excludes no execution. What it adds is
+ * congruence: CBMC gives two applications to equal operands equal results, which for two
+ * division circuits the solver would have to prove. A zero divisor fails the assertion, as
+ * the operator fails --div-by-zero-check. */
+uint64_t __CPROVER_uninterpreted_mtc_udiv(uint64_t, uint64_t);
+uint64_t __CPROVER_uninterpreted_mtc_umod(uint64_t, uint64_t);
+
+static void mtc_div_model(uint64_t n, uint64_t d, uint64_t q, uint64_t r)
+{
+    __CPROVER_assert(d != 0u, "division by zero (model of unsigned division)");
+    __CPROVER_assume((r < d) && ((((unsigned __int128)q * d) + r) == n));
+}
+
+uint64_t mtc_udiv_u64(uint64_t n, uint64_t d)
+{
+    uint64_t q = __CPROVER_uninterpreted_mtc_udiv(n, d);
+    mtc_div_model(n, d, q, __CPROVER_uninterpreted_mtc_umod(n, d));
+    return q;
+}
+
+uint64_t mtc_umod_u64(uint64_t n, uint64_t d)
+{
+    uint64_t r = __CPROVER_uninterpreted_mtc_umod(n, d);
+    mtc_div_model(n, d, __CPROVER_uninterpreted_mtc_udiv(n, d), r);
+    return r;
+}
+#endif

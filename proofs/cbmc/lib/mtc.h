@@ -127,18 +127,32 @@ static inline int mtc_separated(const void *p, __int128 plo, __int128 phi, __int
 #define MTC_U64_MAX ((__int128)0xFFFFFFFFFFFFFFFFull)
 #define MTC_I64_MIN (-(__int128)0x8000000000000000ull)
 #define MTC_I64_MAX ((__int128)0x7FFFFFFFFFFFFFFFull)
+/* Unsigned 64-bit division of the contracts (mtc_udiv64, mtc_umod64). A proof built with
+ * -DMTC_DIV_MODEL divides through the model of mtc.c (assumption B11), the same one that its
+ * Makefile puts in place of the kernel's mt_udiv_u64 and mt_umod_u64 (REPLACE_CALLS): the
+ * kernel's quotient and the contract's quotient of equal operands are then one value. */
+#if defined(MTC_DIV_MODEL)
+uint64_t mtc_udiv_u64(uint64_t n, uint64_t d);
+uint64_t mtc_umod_u64(uint64_t n, uint64_t d);
+#define MTC_UDIV_U64(a, b) mtc_udiv_u64((a), (b))
+#define MTC_UMOD_U64(a, b) mtc_umod_u64((a), (b))
+#else
+#define MTC_UDIV_U64(a, b) ((a) / (b))
+#define MTC_UMOD_U64(a, b) ((a) % (b))
+#endif
+
 static inline __int128 mtc_udiv64(__int128 a, __int128 b)
 {
     __CPROVER_assert(a >= 0 && a <= MTC_U64_MAX && b >= 0 && b <= MTC_U64_MAX,
                      "spec division: operands in [0, 2^64)");
-    return (__int128)((unsigned long long)a / (unsigned long long)b);
+    return (__int128)MTC_UDIV_U64((unsigned long long)a, (unsigned long long)b);
 }
 
 static inline __int128 mtc_umod64(__int128 a, __int128 b)
 {
     __CPROVER_assert(a >= 0 && a <= MTC_U64_MAX && b >= 0 && b <= MTC_U64_MAX,
                      "spec division: operands in [0, 2^64)");
-    return (__int128)((unsigned long long)a % (unsigned long long)b);
+    return (__int128)MTC_UMOD_U64((unsigned long long)a, (unsigned long long)b);
 }
 
 static inline __int128 mtc_sdiv64(__int128 a, __int128 b)

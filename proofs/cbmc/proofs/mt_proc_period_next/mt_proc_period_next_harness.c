@@ -17,6 +17,16 @@ void harness(void)
     mtc_ghosts_nondet();
 
     __CPROVER_assume(mtc_pre_mt_proc_period_next(deadline, now, period_us));
+    /* Lemma MtModStep (kernel/spec/mt_spec_arith.h, proved by WP) at n = now - *deadline,
+     * p = period_us: (n - n % p + p) % p == 0, the late deadline is on the grid. Assumed
+     * (B12): a fact about a product and a quotient that the solver does not derive. */
+    if (now >= *deadline) {
+        uint64_t n = now - *deadline;
+        uint64_t r = mtc_umod_u64(n, period_us);
+        if ((r <= n) && ((n - r) <= (UINT64_MAX - period_us))) {
+            __CPROVER_assume(mtc_umod_u64((n - r) + period_us, period_us) == 0u);
+        }
+    }
     mtc_snapshot();
     uint32_t res = mt_proc_period_next(deadline, now, period_us);
     mtc_post_mt_proc_period_next(deadline, now, period_us, res);
