@@ -1206,6 +1206,7 @@ class LT:
 U32_MAX = (1 << 32) - 1
 U64_MAX = (1 << 64) - 1
 I64_MIN = -(1 << 63)
+I128_MAX = (1 << 127) - 1
 I64_MAX = (1 << 63) - 1
 
 
@@ -1534,7 +1535,13 @@ class Translator:
             self.want(lb, "int", e[3], w)
             if op in ("/", "%"):
                 return self.divide(op, a, la, b, lb)
-            return f"({a} {op} {b})", LT("int", rng=rng_op(op, la.rng, lb.rng))
+            r = rng_op(op, la.rng, lb.rng)
+            if (op == "*" and la.rng is not None and lb.rng is not None and la.rng[0] >= 0
+                    and lb.rng[0] >= 0 and U64_MAX < r[1] <= I128_MAX):
+                # a product of non-negative values beyond 64 bits: MTC_UMUL128 (lib/mtc.h), the
+                # operator itself unless the proof models arithmetic (B11)
+                return f"MTC_UMUL128({a}, {b})", LT("int", rng=r)
+            return f"({a} {op} {b})", LT("int", rng=r)
         if tag == "cast":
             t = self.ctype_of_words(e[1], w)
             c, lt = self.term(e[2], ctx)
@@ -1582,7 +1589,8 @@ class Translator:
         kernel divides the same values at the same width the solver can share one circuit.
           * both ranges known: the narrowest of unsigned 32, unsigned 64 and signed 64 bits
             that holds them, without a check; __int128 when none does and a range can leave
-            the signed and unsigned 64-bit ranges (e.g. ticks * 10^6);
+            the signed and unsigned 64-bit ranges (e.g. ticks * 10^6), through MTC_UDIV128 /
+            MTC_UMOD128 when both are non-negative (the operator, or the model of B11);
           * a dividend known to be in (-2^64, 2^64) but not of one sign (a difference of two
             64-bit values) over a known non-negative divisor: unsigned 64 bits, behind an
             assertion that the dividend is not negative;
@@ -1609,6 +1617,9 @@ class Translator:
         if ra is not None and rb is not None:
             if within(ra, -U64_MAX, U64_MAX) and within(rb, 0, U64_MAX):
                 fn = "mtc_udiv64" if op == "/" else "mtc_umod64"
+                return f"{fn}({a}, {b})", out
+            if within(ra, 0, I128_MAX) and within(rb, 0, I128_MAX):
+                fn = "MTC_UDIV128" if op == "/" else "MTC_UMOD128"
                 return f"{fn}({a}, {b})", out
             return f"({a} {op} {b})", out
         if any(rg is not None and not within(rg, I64_MIN, I64_MAX) for rg in (ra, rb)):

@@ -133,10 +133,11 @@ def translate(inputs, incs, out):
     return subprocess.run(cmd, capture_output=True, text=True)
 
 
-def cbmc_failures(goto_srcs, incs, workdir, extra=()):
+def cbmc_failures(goto_srcs, incs, workdir, extra=(), defines=()):
     """Compile and run CBMC; returns (failed property descriptions, total properties)."""
     gb = os.path.join(workdir, "h.goto")
-    cc = subprocess.run([os.path.join(BIN, "goto-cc"), "-DCBMC", "--function", "harness", "-o", gb]
+    cc = subprocess.run([os.path.join(BIN, "goto-cc"), "-DCBMC", *defines, "--function", "harness",
+                         "-o", gb]
                         + [f"-I{d}" for d in incs] + goto_srcs, capture_output=True, text=True)
     if cc.returncode != 0:
         raise AssertionError("goto-cc failed:\n" + cc.stdout + cc.stderr)
@@ -484,14 +485,15 @@ class Division(unittest.TestCase):
         write(os.path.join(self.src, "mt_div.h"), DIV_H)
         write(os.path.join(self.dir, "harness.c"), DIV_HARNESS)
 
-    def run_div(self, impl=DIV_C):
+    def run_div(self, impl=DIV_C, defines=()):
         write(os.path.join(self.src, "mt_div.c"), impl)
         t = translate([os.path.join(self.src, "mt_div.h")], [self.src], self.out)
         self.assertEqual(t.returncode, 0, t.stderr)
         srcs = [os.path.join(self.dir, "harness.c"), os.path.join(self.src, "mt_div.c"),
                 os.path.join(LIB, "mtc.c"), os.path.join(LIB, "ghost.c")]
         return cbmc_failures(srcs, [self.src, self.out, LIB], self.dir,
-                             ["--external-sat-solver", "cadical"] if shutil.which("cadical") else [])
+                             ["--external-sat-solver", "cadical"] if shutil.which("cadical") else [],
+                             defines)
 
     def gen(self, name):
         with open(os.path.join(self.out, name)) as f:
@@ -509,7 +511,9 @@ class Division(unittest.TestCase):
         wide = self.gen("mt_wide_contract.h")
         self.assertNotIn("mtc_udiv64", wide)
         self.assertNotIn("unsigned long long)", wide)
-        self.assertRegex(wide, r"\(\(__int128\)1000ull\)\) / \(\(__int128\)\(h\)\)")
+        # beyond 64 bits and non-negative: the macros of lib/mtc.h (operators, or the B11 models)
+        self.assertIn("MTC_UDIV128(MTC_UMUL128(((__int128)(t)), ((__int128)1000ull)), "
+                      "((__int128)(h)))", wide)
 
     def test_exact(self):
         failed, total = self.run_div()
@@ -521,6 +525,20 @@ class Division(unittest.TestCase):
             "mt_half_u: ensures half",
             "spec division: operands in [-2^63, 2^63)"])
         self.assertGreater(total, 20)
+
+    def test_model(self):
+        # with the models of unsigned division and products (-DMTC_DIV_MODEL, B11) the
+        # verdicts are those of the operators: the same three failures, and a wrong quotient
+        # is still caught
+        failed, total = self.run_div(defines=["-DMTC_DIV_MODEL"])
+        self.assertEqual(sorted(failed), [
+            "arithmetic overflow on signed type conversion in (signed long long int)a",
+            "mt_half_u: ensures half",
+            "spec division: operands in [-2^63, 2^63)"])
+        self.assertGreater(total, 20)
+        bad = DIV_C.replace("return (a - b) / c;", "return (a - b) / c - (a == b + c);")
+        failed, _ = self.run_div(bad, defines=["-DMTC_DIV_MODEL"])
+        self.assertIn("mt_q64: ensures q", failed)
 
     def test_wrong_quotients_caught(self):
         bad = (DIV_C.replace("return a / b;", "return a / b + (a == 7u);")

@@ -14,15 +14,6 @@
 
     lemma MtDivUnique: \forall integer x, h, q;
         x >= 0 ==> h > 0 ==> q * h <= x < (q + 1) * h ==> x / h == q;
-
-    lemma MtMulDiv: \forall integer k, p; k >= 0 ==> p > 0 ==> (k * p) / p == k;
-
-    lemma MtMulMod: \forall integer k, p; k >= 0 ==> p > 0 ==> (k * p) % p == 0;
-
-    lemma MtModSplit: \forall integer n, p; n >= 0 ==> p > 0 ==> n - n % p + p == (n / p + 1) * p;
-
-    lemma MtModStep: \forall integer n, p;
-        n >= 0 ==> p > 0 ==> (n - n % p + p) % p == 0;
 */
 
 #endif /* MT_SPEC_ARITH_H */

@@ -4,11 +4,12 @@
  * @brief Timer and IO proc sets (see mt/proc.h).
  */
 #include "mt/proc.h"
-#include "mt_div.h"
+#include "mt_arith.h"
 
 #include "mt_atomic.h"
 #include "mt_invoke.h"
 #include "mt_spec_arith.h"
+#include "mt_spec_div.h"
 
 void mt_proc_set_init(mt_proc_set_t *p)
 {

@@ -5,6 +5,7 @@
  */
 #include "mt/time.h"
 
+#include "mt_arith.h"
 #include "mt_spec_arith.h"
 
 mt_status_t mt_time_ext_init(mt_time_ext_t *t, uint32_t hw_max, uint32_t hw_now)
@@ -38,8 +39,9 @@ uint64_t mt_time_extend(mt_time_ext_t *t, uint32_t hw_now)
 
 uint64_t mt_time_ticks_to_us(uint64_t ticks, uint32_t hz)
 {
-    uint64_t whole = ticks / hz;
-    uint64_t part = ((ticks % hz) * 1000000u) / hz; /* < 1e6, no overflow: (hz-1)*1e6 < 2^63 */
+    uint64_t whole = mt_udiv_u64(ticks, hz);
+    /* < 10^6, and no overflow: (hz - 1) * 10^6 < 2^52 */
+    uint64_t part = mt_udiv_u64(mt_umul_u64(mt_umod_u64(ticks, hz), 1000000u), hz);
 
     /* floor(ticks * 1e6 / hz) == whole * 1e6 + part, by uniqueness of the quotient */
     //@ assert split: ticks == whole * hz + ticks % hz && 0 <= ticks % hz < hz;
@@ -49,10 +51,15 @@ uint64_t mt_time_ticks_to_us(uint64_t ticks, uint32_t hz)
     //@ assert q_hi: ticks * 1000000 < (whole * 1000000 + part + 1) * hz;
     //@ assert quot: (ticks * 1000000) / hz == whole * 1000000 + part;
 
-    if (whole > ((UINT64_MAX - part) / 1000000u)) {
+    /* saturate when whole * 10^6 + part > UINT64_MAX: first whole * 10^6 alone, then the sum */
+    if (whole > (UINT64_MAX / 1000000u)) {
         return UINT64_MAX;
     }
-    return (whole * 1000000u) + part;
+    whole = mt_umul_u64(whole, 1000000u);
+    if (part > (UINT64_MAX - whole)) {
+        return UINT64_MAX;
+    }
+    return whole + part;
 }
 
 bool mt_time_ext_valid(const mt_time_ext_t *t)

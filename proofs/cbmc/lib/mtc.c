@@ -97,15 +97,20 @@ bool mtc_nondet_bool(void)
 }
 
 #if defined(MTC_DIV_MODEL)
-/* The model of unsigned 64-bit division (assumption B11). q = n / d and r = n % d are the
- * values of two uninterpreted functions of (n, d), constrained by C's definition of unsigned
- * division (C11 6.5.5): q * d + r == n and r < d. For d >= 1 exactly one pair satisfies
- * it, the operators' values, so the assumption excludes no execution. What it adds is
- * congruence: CBMC gives two applications to equal operands equal results, which for two
- * division circuits the solver would have to prove. A zero divisor fails the assertion, as
- * the operator fails --div-by-zero-check. */
+/* Models of unsigned division and multiplication (assumption B11). Each result is the value
+ * of an uninterpreted function of the operands, constrained by the operation's definition:
+ * for division q * d + r == n and r < d (C11 6.5.5), for a product p == n * m without
+ * overflow. Each constraint has exactly one solution, the operator's value, so the
+ * assumptions exclude no execution. What they add is congruence: CBMC gives two applications
+ * to equal operands equal results, which for two division or multiplication circuits the
+ * solver would have to prove. A zero divisor or an overflowing product fails an assertion,
+ * as the operator fails --div-by-zero-check or --unsigned-overflow-check. */
 uint64_t __CPROVER_uninterpreted_mtc_udiv(uint64_t, uint64_t);
 uint64_t __CPROVER_uninterpreted_mtc_umod(uint64_t, uint64_t);
+uint64_t __CPROVER_uninterpreted_mtc_umul(uint64_t, uint64_t);
+__int128 __CPROVER_uninterpreted_mtc_udiv128(__int128, __int128);
+__int128 __CPROVER_uninterpreted_mtc_umod128(__int128, __int128);
+__int128 __CPROVER_uninterpreted_mtc_umul128(__int128, __int128);
 
 static void mtc_div_model(uint64_t n, uint64_t d, uint64_t q, uint64_t r)
 {
@@ -125,5 +130,43 @@ uint64_t mtc_umod_u64(uint64_t n, uint64_t d)
     uint64_t r = __CPROVER_uninterpreted_mtc_umod(n, d);
     mtc_div_model(n, d, __CPROVER_uninterpreted_mtc_udiv(n, d), r);
     return r;
+}
+
+uint64_t mtc_umul_u64(uint64_t n, uint64_t m)
+{
+    uint64_t p = __CPROVER_uninterpreted_mtc_umul(n, m);
+    __CPROVER_assert(!__CPROVER_overflow_mult(n, m), "product overflow (model of multiplication)");
+    __CPROVER_assume(!__CPROVER_overflow_mult(n, m) && (p == (n * m)));
+    return p;
+}
+
+/* The contracts' wide arithmetic: operands the translator knows to be non-negative. */
+static void mtc_div128_model(__int128 n, __int128 d, __int128 q, __int128 r)
+{
+    __CPROVER_assert((n >= 0) && (d >= 1), "spec division: dividend >= 0, divisor >= 1 (model)");
+    __CPROVER_assume((q >= 0) && (r >= 0) && (r < d) && !__CPROVER_overflow_mult(q, d) &&
+                     ((q * d) == (n - r)));
+}
+
+__int128 mtc_udiv128(__int128 n, __int128 d)
+{
+    __int128 q = __CPROVER_uninterpreted_mtc_udiv128(n, d);
+    mtc_div128_model(n, d, q, __CPROVER_uninterpreted_mtc_umod128(n, d));
+    return q;
+}
+
+__int128 mtc_umod128(__int128 n, __int128 d)
+{
+    __int128 r = __CPROVER_uninterpreted_mtc_umod128(n, d);
+    mtc_div128_model(n, d, __CPROVER_uninterpreted_mtc_udiv128(n, d), r);
+    return r;
+}
+
+__int128 mtc_umul128(__int128 a, __int128 b)
+{
+    __int128 p = __CPROVER_uninterpreted_mtc_umul128(a, b);
+    __CPROVER_assert(!__CPROVER_overflow_mult(a, b), "spec product within 128 bits (model)");
+    __CPROVER_assume(!__CPROVER_overflow_mult(a, b) && (p == (a * b)));
+    return p;
 }
 #endif

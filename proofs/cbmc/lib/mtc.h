@@ -127,18 +127,30 @@ static inline int mtc_separated(const void *p, __int128 plo, __int128 phi, __int
 #define MTC_U64_MAX ((__int128)0xFFFFFFFFFFFFFFFFull)
 #define MTC_I64_MIN (-(__int128)0x8000000000000000ull)
 #define MTC_I64_MAX ((__int128)0x7FFFFFFFFFFFFFFFull)
-/* Unsigned 64-bit division of the contracts (mtc_udiv64, mtc_umod64). A proof built with
- * -DMTC_DIV_MODEL divides through the model of mtc.c (assumption B11), the same one that its
- * Makefile puts in place of the kernel's mt_udiv_u64 and mt_umod_u64 (REPLACE_CALLS): the
- * kernel's quotient and the contract's quotient of equal operands are then one value. */
+/* Unsigned division and wide products of the contracts (mtc_udiv64, mtc_umod64, and the
+ * translator's MTC_UDIV128, MTC_UMOD128, MTC_UMUL128). A proof built with -DMTC_DIV_MODEL
+ * computes them with the models of mtc.c (assumption B11), the ones its Makefile puts in place
+ * of the kernel's mt_udiv_u64, mt_umod_u64 and mt_umul_u64 (REPLACE_CALLS): a quotient or
+ * product of the kernel and one of the contract with equal operands are then one value.
+ * Without it they are the C operators. */
 #if defined(MTC_DIV_MODEL)
 uint64_t mtc_udiv_u64(uint64_t n, uint64_t d);
 uint64_t mtc_umod_u64(uint64_t n, uint64_t d);
+uint64_t mtc_umul_u64(uint64_t n, uint64_t m);
+__int128 mtc_udiv128(__int128 n, __int128 d);
+__int128 mtc_umod128(__int128 n, __int128 d);
+__int128 mtc_umul128(__int128 a, __int128 b);
 #define MTC_UDIV_U64(a, b) mtc_udiv_u64((a), (b))
 #define MTC_UMOD_U64(a, b) mtc_umod_u64((a), (b))
+#define MTC_UDIV128(a, b) mtc_udiv128((a), (b))
+#define MTC_UMOD128(a, b) mtc_umod128((a), (b))
+#define MTC_UMUL128(a, b) mtc_umul128((a), (b))
 #else
 #define MTC_UDIV_U64(a, b) ((a) / (b))
 #define MTC_UMOD_U64(a, b) ((a) % (b))
+#define MTC_UDIV128(a, b) ((a) / (b))
+#define MTC_UMOD128(a, b) ((a) % (b))
+#define MTC_UMUL128(a, b) ((a) * (b))
 #endif
 
 static inline __int128 mtc_udiv64(__int128 a, __int128 b)

@@ -16,6 +16,21 @@ void harness(void)
     mtc_ghosts_nondet();
 
     __CPROVER_assume(mtc_pre_mt_time_ticks_to_us(ticks, hz));
+    /* Assumed facts (B12), all proved by WP for every ticks and every hz >= 1: the split
+     * quotient, assertion `quot` of mt_time_ticks_to_us (kernel/src/time.c),
+     * floor(ticks * 10^6 / hz) == (ticks / hz) * 10^6 + ((ticks % hz) * 10^6) / hz, here with
+     * the product computed in 64 bits where it fits, and lemma MtUsAbove
+     * (kernel/spec/mt_spec_div.h) where it does not. */
+    if (hz >= 1u) {
+        uint64_t w = mtc_udiv_u64(ticks, hz);
+        uint64_t p = mtc_udiv_u64(mtc_umul_u64(mtc_umod_u64(ticks, hz), 1000000u), hz);
+        __int128 q = mtc_udiv128(mtc_umul128((__int128)ticks, (__int128)1000000), (__int128)hz);
+        if (w <= (UINT64_MAX / 1000000u)) {
+            __CPROVER_assume(q == ((__int128)mtc_umul_u64(w, 1000000u) + (__int128)p));
+        } else {
+            __CPROVER_assume(q > (__int128)UINT64_MAX);
+        }
+    }
     mtc_snapshot();
     uint64_t res = mt_time_ticks_to_us(ticks, hz);
     mtc_post_mt_time_ticks_to_us(ticks, hz, res);
