@@ -2420,6 +2420,9 @@ def param_list(fc, with_result):
 
 
 def gen_contract(prog, tr, fc, kinds):
+    # local names (mtc_j<n>, mtc_<v>_w<n>) count from 0 in each contract header, so a contract
+    # added elsewhere leaves this header's text, and the record keys of its proofs, unchanged
+    tr.uid = 0
     name = fc.decl.name
     where = f"{rel(fc.file)}:{fc.line}: {name}"
     env = func_env(fc)
