@@ -1,10 +1,12 @@
 # SPDX-License-Identifier: Apache-2.0
 # proofs/proofs.mk -- proof gates, included by the top Makefile (paths relative to the root).
 #
-#   make prove          tools/bootstrap.sh prove, then every proof part (for now: wp)
-#   make wp             Frama-C/WP on every kernel module + the data-type laws, 2 modules at a
-#                       time, then proofs/wp/gate.py (fails unless 100 % goals + smoke tests)
-#   make wp-<module>    one module (status time sem proc ring objring sched mission wq bus laws), no gate
+#   make prove          tools/bootstrap.sh prove, then every proof part (tools/prove.sh), strict gate
+#   make prove-cold     the same with every cache emptied (no reused verdict at all)
+#   make wp             Frama-C/WP on every kernel module, the data-type laws and the ChibiOS
+#                       port's time arithmetic, 2 modules at a time, always from source, then
+#                       the canary and proofs/wp/gate.py (fails unless 100 % goals + smoke tests)
+#   make wp-<module>    one module (the names of WP_ORDER below), no gate
 #   make wp-gate        the gate alone, on the last reports
 #   make wp-diversity   Z3 alone and CVC4 alone, regenerates proofs/wp/diversity.md
 #   make wp-clean       drop the WP sessions and caches
@@ -19,8 +21,10 @@ WP_DIR       ?= $(WP_ROOT)/wp
 WP_WHY3CONF  := $(WP_ROOT)/why3.conf
 # Longest first (make -j starts them in this order, so the slowest module does not start
 # last and leave one core idle at the end); modules not named here follow, alphabetically.
-WP_ORDER     := mission sched wq bus ring objring proc laws sem time status
-WP_ALL_MODS  := $(filter-out invoke mission_invoke bus_invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws
+# chibios_time is the ChibiOS port's time arithmetic (hal_chibios/port/mt_chibios_time.c): the
+# port's proofs go through the same flags and the same gate as the kernel's.
+WP_ORDER     := wq mission bus sched ring objring proc laws sem time status chibios_time
+WP_ALL_MODS  := $(filter-out invoke mission_invoke bus_invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws chibios_time
 WP_MODULES   := $(filter $(WP_ALL_MODS),$(WP_ORDER)) $(filter-out $(WP_ORDER),$(WP_ALL_MODS))
 # Per proof goal; smoke tests have their own limit (-wp-smoke-timeout, 2 s by default). The
 # slowest passing goal takes about 7 s on an idle 2-core machine: 20 s leaves room for a loaded
@@ -46,7 +50,10 @@ WP_CACHE_DIR := proofs/wp/cache
 WP_INC       := -Ikernel/include -Ikernel/port -Ikernel/spec -Ikernel/src
 # Sources per module: kernel/src/<m>.c, or every file of proofs/wp/laws/ for `laws`.
 WP_SRC_laws  := $(wildcard proofs/wp/laws/*.c)
+WP_SRC_chibios_time := hal_chibios/port/mt_chibios_time.c
+WP_INC_chibios_time := -Ihal_chibios/port
 wp_src        = $(or $(WP_SRC_$(1)),kernel/src/$(1).c)
+wp_inc        = $(WP_INC) $(WP_INC_$(1))
 # Memory model per module. objring and bus take `void *` objects (messages) and handle them as
 # bytes only; WP's Typed model reads void* as sint8*, so the void* -> uint8_t* casts need +cast
 # (keeps the pointer value). Sound there because those modules never access those bytes as
@@ -62,37 +69,58 @@ wp_model      = $(or $(WP_MODEL_$(1)),Typed)
 
 # WP_SMOKE=no drops the smoke tests (only for the prover-diversity runs, which compare goals).
 WP_SMOKE     ?= yes
-# WP_KEY_FLAGS: every option that can change a verdict (the module record's key hashes them);
-# WP_FLAGS adds the session cache mode and the number of parallel prover runs.
+# WP_FCT restricts every module to the named functions (prove_selftest); WP_FCT_<module>, set
+# by a shard plan (PROVE_SHARD, tools/prove_shard.py), restricts one module.
+wp_fct        = $(or $(WP_FCT),$(WP_FCT_$(1)))
+# WP_PROP_<module> restricts one module to the named properties (-wp-prop): a shard plan sets
+# @lemma to prove the module's lemmas alone (a run with -wp-fct proves no lemma).
+wp_prop       = $(WP_PROP_$(1))
 WP_CORE_FLAGS = -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast \
-           $(if $(filter no,$(WP_SMOKE)),-wp-no-smoke-tests,-wp-smoke-tests) -wp-smoke-timeout $(WP_SMOKE_TIMEOUT) -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) \
-           $(if $(WP_FCT),-wp-fct $(WP_FCT))
-WP_KEY_FLAGS = $(WP_CORE_FLAGS) $(WP_INC)
-WP_FLAGS = $(WP_CORE_FLAGS) -wp-par $(WP_PAR) -wp-cache $(WP_CACHE) -cpp-extra-args="$(WP_INC)"
-# Module records (proofs/wp/record.py, assumption W5): a module whose key (preprocessed source,
-# WP_KEY_FLAGS, model, Why3 configuration, tool versions) matches its last passing run in
-# $(WP_DIR), or its committed record proofs/wp/records/<m>.json.gz, is not re-run: the run's
-# report and log are restored, and the gate and the report say so. Only with WP_CACHE=update or
-# replay and without WP_FCT; WP_RECORD=no (or WP_CACHE=none) runs Frama-C on every module.
-WP_RECORD    ?= yes
-wp_use_record = $(and $(filter yes,$(WP_RECORD)),$(filter update replay,$(WP_CACHE)),$(if $(WP_FCT),,yes))
+           $(if $(filter no,$(WP_SMOKE)),-wp-no-smoke-tests,-wp-smoke-tests) -wp-smoke-timeout $(WP_SMOKE_TIMEOUT) -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT)
+WP_FLAGS = $(WP_CORE_FLAGS) -wp-par $(WP_PAR) -wp-cache $(WP_CACHE) -load-module $(WP_POLL)
+# Frama-C's task server sleeps 50 ms between rounds; proofs/wp/wp_poll.ml polls every 2 ms
+# (compiled against the installed Frama-C by the rule below). Verdicts are unchanged.
+WP_POLL      := $(WP_ROOT)/wp_poll.cmxs
 
-.PHONY: prove prove-selftest deps-prove wp wp-all wp-gate wp-canary wp-clean wp-diversity wp-conf \
-        wp-cache-save \
+.PHONY: prove prove-cold prove-selftest prove-selftest-ci deps-prove wp wp-all wp-gate wp-canary wp-clean \
+        wp-diversity wp-conf wp-cache-save \
         $(addprefix wp-,$(WP_MODULES))
 
 deps-prove:
 	@tools/bootstrap.sh prove
 
-# Every proof part (WP, CBMC, TLC), timed, then the report (tools/prove.sh).
-# PROVE_GATE=full (default) fails unless everything is proved; PROVE_GATE=baseline fails
-# only when a count drops below proofs/baseline.json.
+# Every proof part (WP, CBMC, TLC, traces), timed, then the report and its strict gate
+# (tools/prove.sh, tools/proof_report.py): anything not proved fails.
 prove:
 	@tools/prove.sh
 
-# Seeded bugs (proofs/mutants.json) that WP or CBMC must reject.
+# Everything from nothing: no WP cache (every prover runs on every goal), every CBMC property
+# and coverage run made fresh, the capacity-maximum CBMC tier; the report says "cold".
+prove-cold:
+	@rm -rf $(WP_DIR) $(BUILD)/proof/cbmc
+	@PROVE_COLD=1 WP_CACHE=none CBMC_RECORD=fresh tools/prove.sh
+
+# Sharded proofs (tools/prove_shard.py): `make prove PROVE_SHARD=i/N` on N machines, then
+# `make prove-merge SHARDS="dir1 ... dirN"` (each the BUILD folder of one shard) writes one
+# report into PROVE_MERGE_OUT with the strict gate. wp-list: the WP modules, one a line,
+# "name|sources|include flags", for the shard plan.
+PROVE_MERGE_OUT ?= $(BUILD)/merged
+.PHONY: prove-merge wp-list
+prove-merge:
+	@python3 tools/prove_shard.py merge $(PROVE_MERGE_OUT) $(SHARDS)
+
+wp-list:
+	@$(foreach m,$(WP_MODULES),echo '$(m)|$(call wp_src,$(m))|$(strip $(call wp_inc,$(m)))';)
+
+# Seeded bugs (proofs/mutants.json), each rejected by the tools its entry names.
 prove-selftest: deps-prove $(WP_WHY3CONF)
 	@python3 tools/prove_selftest.py
+
+# CI's share of the mutants: SELFTEST_ROTATE of them per landing, taken in turn by the commit
+# count, so every mutant runs within ceil(mutants / SELFTEST_ROTATE) landings.
+SELFTEST_ROTATE ?= 2
+prove-selftest-ci: deps-prove $(WP_WHY3CONF)
+	@python3 tools/prove_selftest.py --rotate $(SELFTEST_ROTATE)
 
 $(WP_WHY3CONF): proofs/wp/mkconf.sh proofs/wp/why3.conf proofs/wp/z3_fixedto.drv \
                 proofs/wp/goal_only.sh proofs/proofs.mk
@@ -100,32 +128,32 @@ $(WP_WHY3CONF): proofs/wp/mkconf.sh proofs/wp/why3.conf proofs/wp/z3_fixedto.drv
 
 wp-conf: $(WP_WHY3CONF)
 
-# One module: log, JSON report, wall time. The session (and the WP cache, stored in the
-# session directory by default) lives under $(WP_DIR)/<m>/session, so an unchanged module
-# re-proves from the cache.
-$(addprefix wp-,$(WP_MODULES)): wp-%: $(WP_WHY3CONF)
+$(WP_POLL): proofs/wp/wp_poll.ml
+	@mkdir -p $(WP_ROOT)/poll
+	@cp proofs/wp/wp_poll.ml $(WP_ROOT)/poll/wp_poll.ml
+	@cd $(WP_ROOT)/poll && ocamlopt -shared -I "$$(frama-c -print-lib-path)" -I +unix \
+	    wp_poll.ml -o ../wp_poll.cmxs
+
+# One module: Frama-C always runs (every VC is generated from the current source); prover
+# verdicts of byte-identical tasks come from the cache (assumption W4), seeded from the
+# committed bundle proofs/wp/cache/<m>.json. Log, JSON report and wall time in $(WP_DIR)/<m>/.
+$(addprefix wp-,$(WP_MODULES)): wp-%: $(WP_WHY3CONF) $(WP_POLL)
 	@mkdir -p $(WP_DIR)/$*
-	@WHY3CONFIG=$(WP_WHY3CONF) python3 proofs/wp/record.py key $* $(WP_DIR)/$*/key.new -- $(WP_KEY_FLAGS) \
-	    -wp-model $(call wp_model,$*) -- $(call wp_src,$*)
-	@$(if $(wp_use_record),if why=$$(python3 proofs/wp/record.py replay $* \
-	        "$$(cat $(WP_DIR)/$*/key.new)" $(WP_DIR)/$*); then \
-	    printf 'wp %-8s %s (%s)\n' "$*" \
-	        "$$(grep -m1 'Proved goals' $(WP_DIR)/$*/wp.log | sed 's/.*Proved goals: *//')" "$$why"; \
-	    rm -f $(WP_DIR)/$*/key.new; exit 0; fi;) \
-	rm -f $(WP_DIR)/$*/key.txt $(WP_DIR)/$*/record.txt; \
-	$(if $(filter none,$(WP_CACHE)),true,python3 proofs/wp/cache.py seed $(WP_CACHE_DIR)/$*.json \
-	    $(WP_DIR)/$*/session/cache >/dev/null;) \
-	start=$$(date +%s.%N); \
+	@rm -f $(WP_DIR)/$*/report.json $(WP_DIR)/$*/wp.log $(WP_DIR)/$*/time.txt
+	@$(if $(filter none,$(WP_CACHE)),rm -rf $(WP_DIR)/$*/session,python3 proofs/wp/cache.py seed \
+	    $(WP_CACHE_DIR)/$*.json $(WP_DIR)/$*/session/cache >/dev/null)
+	@start=$$(date +%s.%N); \
 	WHY3CONFIG=$(WP_WHY3CONF) frama-c $(WP_FLAGS) -wp-model $(call wp_model,$*) \
+	    $(if $(call wp_fct,$*),-wp-fct $(call wp_fct,$*)) -cpp-extra-args="$(call wp_inc,$*)" \
+	    $(if $(call wp_prop,$*),-wp-prop $(call wp_prop,$*)) \
 	    -wp-session $(WP_DIR)/$*/session -wp-report-json $(WP_DIR)/$*/report.json \
 	    $(call wp_src,$*) >$(WP_DIR)/$*/wp.log 2>&1; rc=$$?; \
 	end=$$(date +%s.%N); \
 	awk -v a=$$start -v b=$$end 'BEGIN { printf "%.1f\n", b - a }' >$(WP_DIR)/$*/time.txt; \
-	printf 'wp %-8s %s (%ss; %s)\n' "$*" \
+	printf 'wp %-12s %s (%ss; prover verdicts %s)\n' "$*" \
 	    "$$(grep -m1 'Proved goals' $(WP_DIR)/$*/wp.log | sed 's/.*Proved goals: *//')" \
 	    "$$(cut -d. -f1 $(WP_DIR)/$*/time.txt)" \
-	    "$$(python3 proofs/wp/cache.py count $(WP_DIR)/$*/wp.log)"; \
-	mv $(WP_DIR)/$*/key.new $(WP_DIR)/$*/key.txt; \
+	    "$$(python3 proofs/wp/cache.py count $(WP_DIR)/$*/wp.log | sed 's/replayed/reused/')"; \
 	exit $$rc
 
 wp-all: $(addprefix wp-,$(WP_MODULES))
@@ -134,14 +162,19 @@ wp_empty :=
 wp_comma := ,
 wp_list   = $(subst $(wp_empty) $(wp_empty),$(wp_comma),$(strip $(1)))
 
-# Smoke canary: contradictions the smoke tests must find, and clean controls, run with the
-# same flags and prover configuration as the kernel (proofs/wp/canary/).
-wp-canary: $(WP_WHY3CONF)
+# Smoke canary: contradictions of the kinds the kernel's contracts use (quantified table
+# invariants, orderings, divisions, ghost state, the port's ghost lock and clock, ...) that the
+# smoke tests must find, and clean controls of the same shapes, run with the same flags and
+# prover configuration as the kernel (proofs/wp/canary/); the gate shows caught/seeded.
+wp-canary: $(WP_WHY3CONF) $(WP_POLL)
 	@mkdir -p $(WP_DIR)/canary
-	@WHY3CONFIG=$(WP_WHY3CONF) frama-c $(WP_FLAGS) -wp-model Typed -wp-cache none \
+	@rm -f $(WP_DIR)/canary/result.txt $(WP_DIR)/canary/result.json
+	@WHY3CONFIG=$(WP_WHY3CONF) frama-c $(WP_CORE_FLAGS) -wp-par $(WP_PAR) -load-module $(WP_POLL) \
+	    -cpp-extra-args="$(WP_INC)" -wp-model Typed -wp-cache none \
 	    proofs/wp/canary/smoke_canary.c >$(WP_DIR)/canary/wp.log 2>&1 || \
 	    { tail -n 20 $(WP_DIR)/canary/wp.log; exit 1; }
-	@python3 proofs/wp/canary/check.py $(WP_DIR)/canary/wp.log | tee $(WP_DIR)/canary/result.txt | tail -n 1
+	@python3 proofs/wp/canary/check.py $(WP_DIR)/canary/wp.log --json $(WP_DIR)/canary/result.json \
+	    >$(WP_DIR)/canary/result.txt; rc=$$?; tail -n 1 $(WP_DIR)/canary/result.txt; exit $$rc
 	@grep -q '^wp-canary: [0-9]* functions as expected' $(WP_DIR)/canary/result.txt || \
 	    { cat $(WP_DIR)/canary/result.txt; exit 1; }
 
@@ -149,26 +182,24 @@ wp-canary: $(WP_WHY3CONF)
 # runs provers on the rest, drops entries no goal of this run uses), the canary and the gate;
 # only a run that passes the gate is saved (a goal that timed out on a loaded machine must not
 # be recorded), one bundle per module.
-wp-cache-save: $(WP_WHY3CONF)
+wp-cache-save: $(WP_WHY3CONF) $(WP_POLL)
 	@$(MAKE) --no-print-directory -j$(WP_JOBS) wp-all WP_CACHE=cleanup
 	@$(MAKE) --no-print-directory wp-canary
 	@$(MAKE) --no-print-directory wp-gate >$(WP_DIR)/gate.txt || \
 	    { tail -n 30 $(WP_DIR)/gate.txt; echo "wp-cache-save: the gate failed, bundles not written"; exit 1; }
 	@for m in $(WP_MODULES); do \
-	    python3 proofs/wp/cache.py save $(WP_DIR)/$$m/session/cache $(WP_CACHE_DIR)/$$m.json; \
-	    python3 proofs/wp/record.py save $$m $(WP_DIR)/$$m || exit 1; \
+	    python3 proofs/wp/cache.py save $(WP_DIR)/$$m/session/cache $(WP_CACHE_DIR)/$$m.json || exit 1; \
 	done
 
 wp-gate:
 	@python3 proofs/wp/gate.py --wp-dir $(WP_DIR) --modules $(call wp_list,$(WP_MODULES))
 
-wp: $(WP_WHY3CONF)
+wp: $(WP_WHY3CONF) $(WP_POLL)
 	@start=$$(date +%s); \
-	$(MAKE) --no-print-directory -j$(WP_JOBS) wp-all; rc=$$?; \
-	echo "wp: $$(( $$(date +%s) - start ))s wall for $(words $(WP_MODULES)) modules"; \
-	[ $$rc -eq 0 ] || exit $$rc
-	@$(MAKE) --no-print-directory wp-canary
-	@$(MAKE) --no-print-directory wp-gate
+	$(MAKE) --no-print-directory -j$(WP_JOBS) wp-all wp-canary; rc=$$?; \
+	echo "wp: $$(( $$(date +%s) - start ))s wall for $(words $(WP_MODULES)) modules and the canary"; \
+	$(MAKE) --no-print-directory wp-gate || rc=1; \
+	exit $$rc
 
 # Prover diversity: the same goals with one prover each, in their own directories. Smoke tests
 # are left out of these two runs (they are decided in the main run, assumption W1; with Z3

@@ -86,7 +86,7 @@ sanitizer_links() {
 }
 
 do_test() {
-    apt_ensure gcc g++ make clang clang-14 libgtest-dev googletest valgrind
+    apt_ensure gcc g++ make clang clang-14 libgtest-dev googletest valgrind python3-pytest
     local tmp
     tmp="$(mktemp -d)"
     # Debian 12's clang-14 does not depend on the sanitizer runtimes: add them on demand.
@@ -366,11 +366,13 @@ ensure_tla() {
 }
 
 do_prove() {
-    apt_ensure frama-c-base why3 z3 cvc4 gcc cadical
+    # ocaml: ocamlopt builds proofs/wp/wp_poll.ml against the installed Frama-C (assumption W5)
+    apt_ensure frama-c-base why3 z3 cvc4 gcc cadical ocaml
     ensure_cbmc
     ensure_tla
     record frama-c "frama-c $(first_line frama-c -version)"
     record why3 "$(first_line why3 --version)"
+    record ocamlopt "ocamlopt $(ocamlopt -version) (builds proofs/wp/wp_poll.ml)"
     record z3 "$(first_line z3 --version)"
     record cvc4 "$(cvc4 --version 2>&1 | grep -m1 -i 'version')"
     local cbmc_kind="private, Debian trixie"

@@ -19,8 +19,7 @@
 7. Divisions at the narrowest exact width (class Division): the generated width for each kind
    of operand range, exact quotients and remainders (negative operands included), wrong
    quotients caught, and an operand outside a checked range reported, not computed wrongly.
-6. The keys of the recorded verdicts (CBMC property and coverage records, B10; WP module
-   records, W5): equal for copies of the tree at two other paths and for the repository itself,
+6. The keys of the recorded verdicts (CBMC property and coverage records, B10): equal for copies of the tree at two other paths and for the repository itself,
    changed by an option and by a comment line added to a header; the property key also by a
    comment in Makefile.common, which leaves the coverage key as it is. run.py's replay
    (RecordReplay): recorded from a passing run, replayed only for its digest, and a record
@@ -644,16 +643,12 @@ class KernelMutation(unittest.TestCase):
 
 
 def copy_for_keys(dst):
-    """kernel/, the CBMC proof farm, the translator and the WP record tools, at another path."""
+    """kernel/, the CBMC proof farm and the translator, at another path."""
     shutil.rmtree(dst, ignore_errors=True)
     for d in ("kernel", os.path.join("proofs", "cbmc")):
         shutil.copytree(os.path.join(ROOT, d), os.path.join(dst, d))
     os.makedirs(os.path.join(dst, "tools"))
     shutil.copy(TOOL, os.path.join(dst, "tools"))
-    os.makedirs(os.path.join(dst, "proofs", "wp"))
-    for f in ("record.py", "gate.py", "cache.py", "why3.conf", "z3_fixedto.drv", "goal_only.sh",
-              "mkconf.sh"):
-        shutil.copy(os.path.join(ROOT, "proofs", "wp", f), os.path.join(dst, "proofs", "wp"))
 
 
 def prepend(path, text):
@@ -664,7 +659,7 @@ def prepend(path, text):
 
 
 class RecordKeys(unittest.TestCase):
-    """The digests that decide whether a recorded verdict may be replayed (assumptions W5 and
+    """The digests that decide whether a recorded CBMC verdict may be replayed (assumption
     B10): the same for the same inputs at another path, different after a one-line change of
     a source or header, or of an option."""
 
@@ -685,15 +680,6 @@ class RecordKeys(unittest.TestCase):
         self.assertRegex(key, r"^[0-9a-f]{64}$")
         return key
 
-    def wp_key(self, root, flags):
-        out = os.path.join(root, "key.txt")
-        p = subprocess.run([sys.executable, os.path.join(root, "proofs", "wp", "record.py"),
-                            "key", "ring", out, "--"] + flags + ["--", "kernel/src/ring.c"],
-                           capture_output=True, text=True)
-        self.assertEqual(p.returncode, 0, p.stderr)
-        with open(out) as f:
-            return f.read().strip()
-
     @unittest.skipUnless(os.path.exists(os.path.join(BIN, "goto-cc")), "CBMC not installed")
     def test_cover_key(self):
         k_repo = self.cover_key(ROOT)
@@ -703,19 +689,6 @@ class RecordKeys(unittest.TestCase):
         self.assertNotEqual(k_a, self.cover_key(self.a, ["UNWIND=7"]), "an option is not in the key")
         prepend(os.path.join(self.b, "kernel", "include", "mt", "ring.h"), "/* moved */\n")
         self.assertNotEqual(k_a, self.cover_key(self.b), "a header change is not in the key")
-
-    @unittest.skipIf(shutil.which("frama-c") is None or shutil.which("gcc") is None,
-                     "frama-c not installed")
-    def test_wp_key(self):
-        flags = ["-wp", "-wp-rte", "-wp-timeout", "20", "-Ikernel/include", "-Ikernel/port",
-                 "-Ikernel/spec", "-Ikernel/src", "-wp-model", "Typed"]
-        k_a = self.wp_key(self.a, flags)
-        k_b = self.wp_key(self.b, flags)
-        self.assertEqual(k_a, k_b, "the key depends on the location")
-        self.assertNotEqual(k_a, self.wp_key(self.a, [f if f != "20" else "21" for f in flags]),
-                            "an option is not in the key")
-        prepend(os.path.join(self.b, "kernel", "spec", "mt_spec_ring.h"), "/* moved */\n")
-        self.assertNotEqual(k_a, self.wp_key(self.b, flags), "a spec header change is not in the key")
 
     @unittest.skipUnless(os.path.exists(os.path.join(BIN, "goto-cc")), "CBMC not installed")
     def test_result_key(self):

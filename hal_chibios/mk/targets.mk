@@ -36,22 +36,15 @@ else
 endif
 
 # ---------------------------------------------------------------- proofs of the port's time helpers
-FW_WP_DIR := $(BUILD)/proof/hal_chibios
-FW_WP_SRC := hal_chibios/port/mt_chibios_time.c
 
 chibios-prove: chibios-wp chibios-cbmc
 
-chibios-wp:
-	@tools/bootstrap.sh prove
-	@proofs/wp/mkconf.sh $(FW_WP_DIR) >/dev/null
-	@WHY3CONFIG=$(FW_WP_DIR)/why3.conf frama-c -wp -wp-rte -warn-unsigned-overflow \
-	    -warn-unsigned-downcast -wp-smoke-tests -wp-prover z3,cvc4 -wp-timeout 10 \
-	    -wp-par $(NPROC) -cpp-extra-args="$(KERNEL_INC) -Ihal_chibios/port" \
-	    -wp-report-json $(FW_WP_DIR)/wp.json $(FW_WP_SRC) >$(FW_WP_DIR)/wp.log 2>&1 || \
-	    { tail -n 30 $(FW_WP_DIR)/wp.log; exit 1; }
-	@grep -E '^\[wp\] Proved goals' $(FW_WP_DIR)/wp.log
-	@python3 hal_chibios/proofs/wp_gate.py $(FW_WP_DIR)/wp.json
+# The port's WP proofs are the WP module chibios_time of `make wp` (proofs/proofs.mk): same
+# flags, same cache, same gate; `make prove` runs them with the kernel's.
+chibios-wp: deps-prove
+	@$(MAKE) --no-print-directory wp-chibios_time
+	@python3 proofs/wp/gate.py --wp-dir $(WP_DIR) --modules chibios_time --quiet
 
 chibios-cbmc:
 	@tools/bootstrap.sh prove
-	@bash hal_chibios/proofs/run_cbmc.sh
+	@BUILD="$(BUILD)" bash hal_chibios/proofs/run_cbmc.sh

@@ -120,18 +120,6 @@ def is_smoke(prop):
     return "_wp_smoke_" in prop
 
 
-def read_origin(d):
-    """Where a module's files come from when it was not re-run (proofs/wp/record.py, W5):
-    {"source": "run" (its last passing run here) or "record" (a committed record), "date"};
-    None after a Frama-C run (record.txt absent)."""
-    p = os.path.join(d, "record.txt")
-    if not os.path.exists(p):
-        return None
-    parts = open(p, encoding="utf-8").read().split()
-    return {"source": parts[0], "date": parts[1]} if len(parts) >= 2 else \
-        {"source": "?", "date": "?"}
-
-
 def module_stats(module, wp_dir):
     d = os.path.join(wp_dir, module)
     rep = os.path.join(d, "report.json")
@@ -141,7 +129,6 @@ def module_stats(module, wp_dir):
     times, lines = parse_log(os.path.join(d, "wp.log"))
     res["cache_replayed"], res["cache_fresh"] = wp_cache.count(os.path.join(d, "wp.log"))
     res["fatal"], res["info"] = log_findings(module, lines)
-    res["origin"] = read_origin(d)
     tfile = os.path.join(d, "time.txt")
     if os.path.exists(tfile):
         try:
@@ -248,11 +235,10 @@ def gate(args):
             continue
         flag = "" if (s["proved"] == s["goals"] and s["smoke_passed"] == s["smoke"] and
                       not s["fatal"] and s["goals"] > 0) else "  <-- FAIL"
-        o = s.get("origin")
-        note = "" if not o else (f"  (module record of {o['date']}, W5)" if o["source"] == "record"
-                                 else f"  (unchanged since the run of {o['date']}, W5)")
         out.append(f"{s['module']:44} {s['proved']:>5}/{s['goals']:<5} "
-                   f"{s['smoke_passed']:>4}/{s['smoke']:<4} {fmt_time(s['time_s']):>8}{flag}{note}")
+                   f"{s['smoke_passed']:>4}/{s['smoke']:<4} {fmt_time(s['time_s']):>8}{flag}  "
+                   f"(prover verdicts: {s.get('cache_replayed') or 0} reused, "
+                   f"{s.get('cache_fresh') or 0} fresh)")
         if not args.quiet:
             for fn in sorted(s["functions"]):
                 f = s["functions"][fn]
@@ -269,21 +255,14 @@ def gate(args):
                f"{tot['smoke_passed']:>4}/{tot['smoke']:<4}")
     out.append("proved by (WP counts, smoke tests included): " +
                ", ".join(f"{p} {v}" for p, v in sorted(by_prover.items())))
-    replayed = sum(s.get("cache_replayed") or 0 for s in stats if not s.get("origin"))
-    fresh = sum(s.get("cache_fresh") or 0 for s in stats if not s.get("origin"))
-    out.append(f"prover results of the modules run now (goals and smoke tests): {fresh} from "
-               f"provers run now, {replayed} "
-               "replayed from the WP cache (verdicts recorded for byte-identical prover tasks; "
-               "proofs/wp/cache, assumption W4; WP_CACHE=none runs every prover)")
-    rec = [s["module"] for s in stats if (s.get("origin") or {}).get("source") == "record"]
-    kept = [s["module"] for s in stats if (s.get("origin") or {}).get("source") == "run"]
-    run = [s["module"] for s in stats if not s.get("origin") and not s["missing"]]
-    out.append(f"modules: {len(run)} run by Frama-C now" + (f" ({', '.join(run)})" if run else "") +
-               f", {len(kept)} unchanged since their last run here" +
-               (f" ({', '.join(kept)})" if kept else "") +
-               f", {len(rec)} replayed from module records" + (f" ({', '.join(rec)})" if rec else "") +
-               " (records: proofs/wp/records, assumption W5; WP_RECORD=no or WP_CACHE=none "
-               "runs Frama-C on every module)")
+    replayed = sum(s.get("cache_replayed") or 0 for s in stats)
+    fresh = sum(s.get("cache_fresh") or 0 for s in stats)
+    out.append(f"prover verdicts (goals and smoke tests): {fresh} from provers run now, "
+               f"{replayed} reused from the WP cache (verdicts recorded for byte-identical prover "
+               "tasks; proofs/wp/cache, assumption W4; WP_CACHE=none runs every prover)")
+    run = [s["module"] for s in stats if not s["missing"]]
+    out.append(f"modules: {len(run)} run by Frama-C now, every VC generated from the current "
+               "source" + (f" ({', '.join(run)})" if run else ""))
     problems = []
     for s in stats:
         problems += [f"{s['module']}: unproved: {x}" for x in s["failures"]]
@@ -316,14 +295,14 @@ def gate(args):
     summary = {
         "modules": {s["module"]: {k: s[k] for k in ("goals", "proved", "smoke", "smoke_passed",
                                                     "time_s", "prover_time_s", "by_prover",
-                                                    "cache_replayed", "cache_fresh", "origin",
+                                                    "cache_replayed", "cache_fresh",
                                                     "functions", "failures", "fatal")}
                     for s in stats},
         "goals": tot["goals"], "proved": tot["proved"],
         "smoke": tot["smoke"], "smoke_passed": tot["smoke_passed"],
         "by_prover": by_prover,
         "cache_replayed": replayed, "cache_fresh": fresh,
-        "modules_run": run, "modules_unchanged": kept, "modules_replayed": rec,
+        "modules_run": run,
         "acsl_forbidden": acsl,
         "smoke_canary": canary,
         "pass": ok,
