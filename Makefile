@@ -20,7 +20,8 @@ WARN_CXX   := -std=c++17 -Wall -Wextra -Wshadow -Werror
 help:
 	@echo "make            build the kernel and host port with gcc and clang (warnings are errors)"
 	@echo "make test       install test deps, run the googletest suite: gcc, clang, ASan, UBSan, TSan;"
-	@echo "                mt-mission over the mission files; the vehicle tests (make test-vehicle)"
+	@echo "                mt-mission over the mission files; the vehicle tests (make test-vehicle);"
+	@echo "                the proof tools' tests (make test-proof-tools)"
 	@echo "make cross      build the kernel for Cortex-M4 and print sizes per module"
 	@echo "make lint       cppcheck (MISRA C:2012 addon) and clang-tidy over kernel/"
 	@echo "make demo       run a task table on the host port and print its statistics"
@@ -31,6 +32,10 @@ help:
 	@echo "make sitl [MISSION=vehicle/missions/<file>.waypoints] [SITL_ARGS=...]   fly the example vehicle"
 	@echo "make sched-check    Z3: is the vehicle's task table (vehicle/tasks.def) schedulable?"
 	@echo "make test-vehicle   SITL flights, fault injection, bad missions, sched-check vs SITL"
+	@echo "make test-proof-tools   pytest: the proof report's strict gate fed every kind of failure,"
+	@echo "                    the canary checker, the mutants' rotation, the shard plan and merge"
+	@echo "make prove      install Frama-C/Why3/Z3/CVC4/CBMC/TLC, prove everything, strict gate"
+	@echo "make prove-cold the same with every cache emptied;  make prove-selftest: seeded bugs"
 
 # ---------------------------------------------------------------- host builds
 # $(call host_lib,NAME,CC,EXTRA_CFLAGS)
@@ -96,6 +101,7 @@ test: deps-test
 	done
 	@$(MAKE) --no-print-directory test-mission-tool
 	@$(MAKE) --no-print-directory test-vehicle
+	@$(MAKE) --no-print-directory test-proof-tools
 
 test-fast: $(BUILD)/gcc/mt_tests
 	$(BUILD)/gcc/mt_tests
@@ -144,6 +150,7 @@ clean:
 -include bench/bench.mk
 -include hal_chibios/mk/targets.mk
 -include vehicle/vehicle.mk
+-include tools/tools.mk
 
 # ---------------------------------------------------------------- mission (sequencer, files, tool)
 MISSION_HOST_SRC := $(wildcard tools/mission/wpl.c tools/mission/report.c)

@@ -6,6 +6,8 @@
 #                        covers < 90 % of the kernel code it reaches, or a reachability
 #                        witness (MTC_REACH) is not reached. Writes build/proof/cbmc/summary.json.
 #   make cbmc-<fn>       one proof (same judgement), e.g. make cbmc-mt_bring_write
+#   CBMC_HARNESSES=FILE  make cbmc runs only the harnesses named in FILE, one a line (a shard's
+#                        share, tools/prove_shard.py; pending ones are listed, not run)
 #   CBMC_RECORD=         replay (default): a property or coverage verdict is replayed from
 #                        proofs/cbmc/records.json when the digest of its run's inputs is the
 #                        recorded one (assumption B10), else run; properties: every property run
@@ -21,7 +23,7 @@
 #   make cbmc-clean
 #
 # The contracts come from the ACSL annotations only (tools/acsl2cbmc.py); see
-# proofs/cbmc/README.md and proofs/cbmc/ASSUMPTIONS.md.
+# proofs/cbmc/README.md and proofs/assumptions.json (the B entries).
 
 CBMC_JOBS ?= 2
 CBMC_PROOF_NAMES := $(notdir $(patsubst %/cbmc-proof.txt,%,$(wildcard proofs/cbmc/proofs/*/cbmc-proof.txt)))
@@ -32,7 +34,7 @@ cbmc-deps:
 	@[ -x .tools/bin/cbmc ] && [ -x .tools/bin/goto-cc ] || tools/bootstrap.sh prove
 
 cbmc: cbmc-deps
-	@python3 proofs/cbmc/run.py -j $(CBMC_JOBS)
+	@python3 proofs/cbmc/run.py -j $(CBMC_JOBS) $(if $(CBMC_HARNESSES),--harnesses $(CBMC_HARNESSES))
 
 cbmc-max: cbmc-deps
 	@python3 proofs/cbmc/run.py -j $(CBMC_JOBS) --max

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 """Run the CBMC proofs and judge them.
 
-  proofs/cbmc/run.py [-j N] [--max] [--summary FILE] [FUNCTION...]
+  proofs/cbmc/run.py [-j N] [--max] [--summary FILE] [--harnesses FILE] [FUNCTION...]
 
 1. tools/acsl2cbmc.py translates the ACSL contracts (build/proof/cbmc/gen/).
 2. Every proof folder proofs/cbmc/proofs/<fn>/ (or the ones named) is built and run twice,
@@ -26,7 +26,9 @@ the record instead of being run again. CBMC_RECORD selects:
 Writes build/proof/cbmc/summary.json ({"harnesses", "passed", "results": [{"function",
 "properties", "failed", "coverage", "seconds", ...}]}) and prints one line per harness.
 Exit status 0 only if every harness passes. --max runs the capacity-maximum tier
-(CBMC_BIG=1, see lib/mtc_objects.h), written to summary-max.json.
+(CBMC_BIG=1, see lib/mtc_objects.h), written to summary-max.json. --harnesses FILE (one name a
+line; a shard's share, tools/prove_shard.py) runs those as the default list is run: the
+pending ones among them are listed as pending, not run.
 """
 
 import argparse
@@ -72,6 +74,12 @@ def run_make(name, big, target, timeout):
     if rc == -signal.SIGKILL:
         out += f"\ntimeout: killed after {timeout} s"
     return rc, time.monotonic() - t0, ru.ru_utime + ru.ru_stime, out
+
+
+def killed_by_timeout(rc):
+    """A run killed by run_make's timer (SIGKILL to its process group; its output then ends
+    with "timeout: killed after N s"): the result gets "timeout": true."""
+    return rc == -signal.SIGKILL
 
 
 def messages(path):
@@ -190,6 +198,8 @@ def property_run(name, big, out_root, timeout, rec, key, mode):
     f = {"properties": 0, "failed": 0, "property_source": "fresh"}
     if rc != 0 or not os.path.exists(os.path.join(d, "result.json")):
         f.update({"error": out.strip()[-2000:], "passed": False})
+        if killed_by_timeout(rc):
+            f["timeout"] = True
         return f, wall, cpu
     r = parse_result(os.path.join(d, "result.json"))
     f.update({k: r[k] for k in ("properties", "failed", "failures")})
@@ -228,6 +238,8 @@ def run_one(name, big, out_root, timeout, records, mode):
         entry["coverage_cpu_seconds"] = round(cpu2, 1)
         if rc != 0 or not os.path.exists(os.path.join(d, "coverage.json")):
             entry.update({"error": out.strip()[-2000:], "passed": False})
+            if killed_by_timeout(rc):
+                entry["timeout"] = True
             return entry
         c = parse_coverage(os.path.join(d, "coverage.json"),
                            os.path.join(PROOFS, name, f"{name}_harness.c"))
@@ -256,10 +268,15 @@ def main():
     ap.add_argument("-j", type=int, default=2)
     ap.add_argument("--max", action="store_true", help="capacity-maximum tier (CBMC_BIG=1)")
     ap.add_argument("--summary", default=None)
-    ap.add_argument("--timeout", type=float, default=600.0, help="per harness, seconds")
+    ap.add_argument("--timeout", type=float, default=float(os.environ.get("CBMC_TIMEOUT", "600")),
+                    help="per harness, seconds (default: CBMC_TIMEOUT, else 600)")
+    ap.add_argument("--harnesses", metavar="FILE", help="the harnesses to run, one a line")
     args = ap.parse_args()
 
     names = args.names or proof_names()
+    if args.harnesses:
+        with open(args.harnesses) as f:
+            names = [n for n in f.read().split() if n]
     # Harnesses that do not finish within the CI budget yet (proofs/cbmc/pending.json, each
     # with its reason) are not run by default; they count as not passed, and the summary
     # lists them. Name them, or set CBMC_ALL=1, to run them.
