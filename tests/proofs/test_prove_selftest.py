@@ -1,0 +1,133 @@
+# SPDX-License-Identifier: Apache-2.0
+"""tools/prove_selftest.py without WP or CBMC: the rotation, the judgement of one mutant, and
+proofs/mutants.json against the kernel sources (the list must follow the code).
+
+    /usr/bin/python3 -m pytest -q tests/proofs/test_prove_selftest.py
+"""
+import importlib.util
+import itertools
+import math
+import os
+import subprocess
+import sys
+
+import pytest
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+SCRIPT = os.path.join(ROOT, "tools", "prove_selftest.py")
+
+_spec = importlib.util.spec_from_file_location("prove_selftest", SCRIPT)
+ps = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(ps)
+
+MUTANTS = ps.load_mutants(os.path.join(ROOT, "proofs", "mutants.json"))
+IDS = [m["id"] for m in MUTANTS]
+VERDICTS = (True, False, None)
+REJECT_BY = (["wp"], ["cbmc"], ["wp", "cbmc"])
+
+
+# --- rotation ------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("n", [1, 2, 3, 5, 7, 24, len(MUTANTS), 31])
+def test_rotation_covers_every_mutant_within_ceil_n_over_k_landings(n):
+    for k in range(1, n + 1):
+        rounds = math.ceil(n / k)
+        for c0 in (0, 1, 2, 7, 159, 10**6 + 3):
+            seen = set()
+            for c in range(c0, c0 + rounds):
+                pos = ps.rotation(n, k, c)
+                assert len(pos) == k and len(set(pos)) == k, (n, k, c, pos)
+                assert all(0 <= p < n for p in pos)
+                assert pos == sorted(pos), "selection is in file order"
+                seen.update(pos)
+            assert seen == set(range(n)), (n, k, c0)
+
+
+def test_rotation_is_the_window_at_c_times_k():
+    n = len(MUTANTS)
+    for c in range(0, 3 * n):
+        assert ps.rotation(n, 2, c) == sorted({(2 * c) % n, (2 * c + 1) % n})
+
+
+def test_rotation_larger_than_the_list_selects_every_mutant_once():
+    assert ps.rotation(5, 9, 3) == [0, 1, 2, 3, 4]
+    assert ps.rotation(0, 2, 3) == []
+    with pytest.raises(ValueError):
+        ps.rotation(5, 0, 3)
+
+
+def test_list_rotation_prints_the_selection_without_running():
+    n = len(MUTANTS)
+    p = subprocess.run([sys.executable, SCRIPT, "--list-rotation", "2", "5"],
+                       capture_output=True, text=True, cwd=ROOT, timeout=60)
+    assert p.returncode == 0, p.stderr
+    want = " ".join(IDS[i] for i in ps.rotation(n, 2, 5))
+    assert "commit count 5" in p.stdout and p.stdout.rstrip().split("-> ")[1].startswith(want)
+
+
+def test_commit_count_is_zero_outside_a_git_checkout(tmp_path):
+    assert ps.commit_count(str(tmp_path)) == 0
+
+
+# --- judgement -----------------------------------------------------------------------------
+
+@pytest.mark.parametrize("reject_by,wp,cbmc",
+                         [(r, w, c) for r in REJECT_BY for w, c in itertools.product(VERDICTS, VERDICTS)])
+def test_judge_ok_only_when_every_required_tool_rejects(reject_by, wp, cbmc):
+    verdicts = {"wp": wp, "cbmc": cbmc}
+    ok, reason = ps.judge(reject_by, wp, cbmc)
+    assert ok == all(verdicts[t] is True for t in reject_by)
+    assert isinstance(reason, str) and reason
+    for t, name in (("wp", "WP"), ("cbmc", "CBMC")):
+        v = verdicts[t]
+        if t in reject_by and v is False:
+            assert f"{name} accepted it (must reject)" in reason
+        if t in reject_by and v is None:
+            # no verdict is not an acceptance
+            assert f"{name} gave no verdict" in reason and f"{name} accepted" not in reason
+        if t not in reject_by and ok:
+            word = {True: f"bonus: {name} rejected it too", False: f"{name} accepted it (not required)",
+                    None: f"{name} gave no verdict"}[v]
+            assert word in reason
+
+
+def test_judge_names_why_a_required_tool_gave_no_verdict():
+    ok, reason = ps.judge(["wp", "cbmc"], True, None, {"cbmc": "time-out"})
+    assert not ok and "CBMC gave no verdict (time-out)" in reason
+
+
+@pytest.mark.parametrize("bad", [[], ["tla"], ["wp", "wp"], "wp", None])
+def test_judge_refuses_a_malformed_reject_by(bad):
+    with pytest.raises(ValueError):
+        ps.judge(bad, True, True)
+
+
+# --- proofs/mutants.json follows the code ---------------------------------------------------
+
+def test_mutant_ids_are_unique():
+    assert len(IDS) == len(set(IDS))
+
+
+@pytest.mark.parametrize("m", MUTANTS, ids=IDS)
+def test_mutant_reject_by_is_a_non_empty_subset_of_wp_and_cbmc(m):
+    rb = m.get("reject_by")
+    assert isinstance(rb, list) and rb and len(set(rb)) == len(rb) and set(rb) <= {"wp", "cbmc"}
+
+
+@pytest.mark.parametrize("m", MUTANTS, ids=IDS)
+def test_mutant_names_cbmc_only_with_a_harness_folder(m):
+    harness = m.get("harness", m["function"])
+    folder = os.path.join(ROOT, "proofs", "cbmc", "proofs", harness)
+    if "cbmc" in m["reject_by"]:
+        assert os.path.isdir(folder), f"{m['id']}: no CBMC harness folder {folder}"
+    elif os.path.isdir(folder):
+        # a harness exists but is known to accept the mutant: the list says why
+        assert isinstance(m.get("cbmc_accepts"), str) and m["cbmc_accepts"].strip(), m["id"]
+
+
+@pytest.mark.parametrize("m", MUTANTS, ids=IDS)
+def test_mutant_find_text_occurs_exactly_once_in_its_file(m):
+    with open(os.path.join(ROOT, m["file"]), encoding="utf-8") as f:
+        text = f.read()
+    assert text.count(m["find"]) == 1, f"{m['id']}: find text occurs {text.count(m['find'])} times in {m['file']}"
+    assert m["find"] != m["replace"]
