@@ -396,25 +396,26 @@ def check_trace_all(run):
     return trace_problems(run.sums["tla_trace_all"], "make tla-trace")
 
 
-def check_chibios(run):
-    c = run.sums["chibios_cbmc"]
-    if c is None:
+def harness_problems(summary, label, name_key, cause):
+    """A harness summary ({"harnesses", "passed", "results"}) that is present: its count and
+    every harness not passed, named by name_key, with cause(result)."""
+    if summary is None:
         return []
-    bad = count_problem("ChibiOS port CBMC", c.get("passed", 0), c.get("harnesses", 0),
+    bad = count_problem(label, summary.get("passed", 0), summary.get("harnesses", 0),
                         "harnesses passed")
-    return bad + [f"ChibiOS port CBMC harness {r.get('name', '?')}: not passed (harness "
-                  f"assertions reached {r.get('coverage_reached')}/{r.get('coverage_total')})"
-                  for r in c.get("results", []) if r.get("passed") is not True]
+    return bad + [f"{label} harness {r.get(name_key, '?')}: {cause(r)}"
+                  for r in summary.get("results") or [] if r.get("passed") is not True]
+
+
+def check_chibios(run):
+    return harness_problems(run.sums["chibios_cbmc"], "ChibiOS port CBMC", "name",
+                            lambda r: f"not passed (harness assertions reached "
+                                      f"{r.get('coverage_reached')}/{r.get('coverage_total')})")
 
 
 def check_cbmc_max(run):
-    m = run.sums["cbmc_max"]
-    if m is None:
-        return []
-    bad = count_problem("CBMC capacity-maximum tier", m.get("passed", 0), m.get("harnesses", 0),
-                        "harnesses passed")
-    return bad + [f"CBMC capacity-maximum harness {r.get('function', '?')}: {cbmc_cause(r)}"
-                  for r in m.get("results") or [] if r.get("passed") is not True]
+    return harness_problems(run.sums["cbmc_max"], "CBMC capacity-maximum tier", "function",
+                            cbmc_cause)
 
 
 def mutant_ok(r):

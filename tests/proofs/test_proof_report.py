@@ -447,6 +447,21 @@ def test_chibios_cbmc_failure_fails(proof):
     assert_fails(proof.run(), "ChibiOS port CBMC harness harness_ticks_ceil", "2/3")
 
 
+def test_cbmc_max_failure_fails(proof):
+    # make prove-cold's capacity-maximum tier: present only when it ran, judged like make cbmc
+    tier = {"harnesses": 2, "passed": 2, "results": [harness("mt_bring_write"),
+                                                      harness("mt_oring_push")]}
+    proof.put("cbmc/summary-max.json", tier)
+    assert_passes(proof.run())
+    tier["results"][1].update(passed=False, failed=1, failures=[
+        {"property": "mtc_post.assertion.1", "description": "ensures full"}])
+    tier["passed"] = 1
+    proof.put("cbmc/summary-max.json", tier)
+    res = proof.run()
+    assert_fails(res, "CBMC capacity-maximum tier harness mt_oring_push", "ensures full")
+    assert_fails(res, "CBMC capacity-maximum tier", "1/2 harnesses passed")
+
+
 @pytest.mark.parametrize("old", [False, True], ids=["ok-format", "killed-format"])
 def test_selftest_mutant_not_rejected_fails(proof, old):
     def change(s):
