@@ -3,6 +3,7 @@
 #
 #   make prove          tools/bootstrap.sh prove, then every proof part (tools/prove.sh), strict gate
 #   make prove-cold     the same with every cache emptied (no reused verdict at all)
+#   make reprove        developer shortcut: WP modules with unchanged inputs replayed, not proved
 #   make wp             Frama-C/WP on every kernel module, the data-type laws and the ChibiOS
 #                       port's time arithmetic, 2 modules at a time, always from source, then
 #                       the canary and proofs/wp/gate.py (fails unless 100 % goals + smoke tests)
@@ -82,9 +83,10 @@ WP_FLAGS = $(WP_CORE_FLAGS) -wp-par $(WP_PAR) -wp-cache $(WP_CACHE) -load-module
 # (compiled against the installed Frama-C by the rule below). Verdicts are unchanged.
 WP_POLL      := $(WP_ROOT)/wp_poll.cmxs
 
-.PHONY: prove prove-cold prove-selftest prove-selftest-ci deps-prove wp wp-all wp-gate wp-canary wp-clean \
+.PHONY: prove reprove prove-cold prove-selftest prove-selftest-ci deps-prove wp wp-all wp-gate wp-canary wp-clean \
         wp-diversity wp-conf wp-cache-save \
-        $(addprefix wp-,$(WP_MODULES))
+        $(addprefix wp-,$(WP_MODULES)) $(addprefix wp-run-,$(WP_MODULES)) \
+        $(addprefix wp-inputs-,$(WP_MODULES))
 
 deps-prove:
 	@tools/bootstrap.sh prove
@@ -92,13 +94,21 @@ deps-prove:
 # Every proof part (WP, CBMC, TLC, traces), timed, then the report and its strict gate
 # (tools/prove.sh, tools/proof_report.py): anything not proved fails.
 prove:
-	@tools/prove.sh
+	@WP_REUSE_LOCAL= tools/prove.sh
+
+# Developer shortcut after an edit: as `make prove`, but a WP module whose inputs (its sources,
+# every header of its include folders, the flags, Frama-C's version, the prover configuration)
+# are byte-identical to those of this tree's last run of it is not run again: its report is
+# replayed and the proof report says "replayed, not proved" for it. CBMC replays per harness
+# digest as in `make prove`. Never in CI.
+reprove:
+	@WP_REUSE_LOCAL=yes tools/prove.sh
 
 # Everything from nothing: no WP cache (every prover runs on every goal), every CBMC property
 # and coverage run made fresh, the capacity-maximum CBMC tier; the report says "cold".
 prove-cold:
 	@rm -rf $(WP_DIR) $(BUILD)/proof/cbmc
-	@PROVE_COLD=1 WP_CACHE=none CBMC_RECORD=fresh tools/prove.sh
+	@PROVE_COLD=1 WP_REUSE_LOCAL= WP_CACHE=none CBMC_RECORD=fresh tools/prove.sh
 
 # Sharded proofs (tools/prove_shard.py): `make prove PROVE_SHARD=i/N` on N machines, then
 # `make prove-merge SHARDS="dir1 ... dirN"` (each the BUILD folder of one shard) writes one
@@ -137,8 +147,33 @@ $(WP_POLL): proofs/wp/wp_poll.ml
 # One module: Frama-C always runs (every VC is generated from the current source); prover
 # verdicts of byte-identical tasks come from the cache (assumption W4), seeded from the
 # committed bundle proofs/wp/cache/<m>.json. Log, JSON report and wall time in $(WP_DIR)/<m>/.
+# With WP_REUSE_LOCAL=yes (make reprove) a module whose input digest (wp_inputs) equals the one
+# stored by this tree's last completed run of it is not run: replayed.txt marks the replay.
+wp_inputs = { frama-c -version; cat $(WP_WHY3CONF) proofs/wp/wp_poll.ml proofs/wp/goal_only.sh \
+    proofs/wp/z3_fixedto.drv; echo '$(WP_FLAGS) $(call wp_model,$(1)) $(call wp_fct,$(1)) \
+    $(call wp_prop,$(1)) $(call wp_inc,$(1))'; \
+    cat $(call wp_src,$(1)) $(sort $(wildcard $(patsubst -I%,%/*.h,$(call wp_inc,$(1))))); } \
+    | sha256sum | cut -d' ' -f1
+
 $(addprefix wp-,$(WP_MODULES)): wp-%: $(WP_WHY3CONF) $(WP_POLL)
 	@mkdir -p $(WP_DIR)/$*
+	@rm -f $(WP_DIR)/$*/replayed.txt
+	@digest=$$($(call wp_inputs,$*)); \
+	if [ "$(WP_REUSE_LOCAL)" = yes ] && [ -f $(WP_DIR)/$*/report.json ] && \
+	   [ "$$(cut -d' ' -f1 $(WP_DIR)/$*/inputs.txt 2>/dev/null)" = "$$digest" ]; then \
+	    cut -d' ' -f2- $(WP_DIR)/$*/inputs.txt >$(WP_DIR)/$*/replayed.txt; \
+	    printf 'wp %-12s replayed from the run of %s (identical inputs): not proved now\n' \
+	        "$*" "$$(cat $(WP_DIR)/$*/replayed.txt)"; \
+	    exit 0; \
+	fi; \
+	rm -f $(WP_DIR)/$*/inputs.txt; \
+	$(MAKE) --no-print-directory wp-run-$* WP_INPUTS=$$digest
+
+# The input digest alone (tests/proofs/test_reprove.py).
+$(addprefix wp-inputs-,$(WP_MODULES)): wp-inputs-%: $(WP_WHY3CONF)
+	@$(call wp_inputs,$*)
+
+$(addprefix wp-run-,$(WP_MODULES)): wp-run-%: $(WP_WHY3CONF) $(WP_POLL)
 	@rm -f $(WP_DIR)/$*/report.json $(WP_DIR)/$*/wp.log $(WP_DIR)/$*/time.txt
 	@$(if $(filter none,$(WP_CACHE)),rm -rf $(WP_DIR)/$*/session,python3 proofs/wp/cache.py seed \
 	    $(WP_CACHE_DIR)/$*.json $(WP_DIR)/$*/session/cache >/dev/null)
@@ -154,6 +189,8 @@ $(addprefix wp-,$(WP_MODULES)): wp-%: $(WP_WHY3CONF) $(WP_POLL)
 	    "$$(grep -m1 'Proved goals' $(WP_DIR)/$*/wp.log | sed 's/.*Proved goals: *//')" \
 	    "$$(cut -d. -f1 $(WP_DIR)/$*/time.txt)" \
 	    "$$(python3 proofs/wp/cache.py count $(WP_DIR)/$*/wp.log | sed 's/replayed/reused/')"; \
+	[ $$rc -ne 0 ] || [ -z "$(WP_INPUTS)" ] || [ ! -f $(WP_DIR)/$*/report.json ] || \
+	    echo "$(WP_INPUTS) $$(date -u '+%Y-%m-%d %H:%M:%S UTC')" >$(WP_DIR)/$*/inputs.txt; \
 	exit $$rc
 
 wp-all: $(addprefix wp-,$(WP_MODULES))

@@ -116,6 +116,8 @@ class Run:
         self.baseline = self.baseline or {}
         self.timing = read_object(os.path.join(self.out, "timing.json"))[0] or {}
         self.versions = read_text(os.path.join(self.out, "versions.txt"))
+        # tools/prove.sh's mode: cold (make prove-cold), warm (make prove), reprove.
+        self.mode = (read_text(os.path.join(self.out, "cache.txt")) or "").strip() or "warm"
 
     def path(self, key):
         return os.path.join(self.build, "proof", SUMMARIES[key])
@@ -283,6 +285,15 @@ def check_wp_canary(run):
 def check_wp_log(run):
     return [f"WP module {mod}: log: {first(m['fatal'])}"
             for mod, m in wp_modules(run) if m.get("fatal")]
+
+
+def check_wp_replayed(run):
+    """A module replayed from this tree's last run (not run by Frama-C now) is allowed only in
+    `make reprove`, whose report says so; `make prove` and CI prove every module."""
+    if run.mode == "reprove":
+        return []
+    return [f"WP module {mod}: replayed from a local run, not proved in this {run.mode} run"
+            for mod, m in wp_modules(run) if m.get("replayed_local")]
 
 
 def check_wp_failures(run):
@@ -479,6 +490,7 @@ CHECKS = [
     ("wp-acsl", check_wp_acsl),
     ("wp-canary", check_wp_canary),
     ("wp-log", check_wp_log),
+    ("wp-replayed", check_wp_replayed),
     ("wp-failures", check_wp_failures),
     ("cbmc-count", check_cbmc_count),
     ("cbmc-failed", check_cbmc_failed),

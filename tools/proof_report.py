@@ -50,6 +50,7 @@ def wp_totals(run):
                               "fresh": v.get("cache_fresh") or 0}
                           for m, v in gate.wp_modules(run)},
         "modules_run": wp.get("modules_run", []),
+        "modules_replayed_local": wp.get("modules_replayed_local", []),
         "pass": wp.get("pass"), "smoke_canary": wp.get("smoke_canary"),
         "acsl_forbidden": [{"finding": f, "assumption": a} for f, a in gate.acsl_accepted(run)],
     }
@@ -82,6 +83,19 @@ def selftest_totals(st):
             "ok": ok if isinstance(ok, int) else None}
 
 
+# tools/prove.sh's mode (build/proof/cache.txt), printed at the top of the report.
+MODES = {
+    "cold": "cold (make prove-cold): every cache emptied; every WP prover task and every CBMC "
+            "property and coverage run made in this run",
+    "warm": "warm (make prove): Frama-C on every module from source; prover verdicts reused "
+            "only for byte-identical tasks (W4), CBMC verdicts per harness digest (B10), as "
+            "counted below",
+    "reprove": "reprove (make reprove, a developer shortcut): WP modules whose inputs are "
+               "identical to this tree's last run are replayed, not proved; `make prove` "
+               "proves all",
+}
+
+
 def build_summary(run, found):
     s = run.sums
     problems = [p for _, ps in found for p in ps]
@@ -98,6 +112,7 @@ def build_summary(run, found):
         "chibios_cbmc": pick(s["chibios_cbmc"], ("harnesses", "passed")),
         "assumptions": run.assumptions, "timing": run.timing,
         "versions": run.versions.splitlines(), "parts": run.parts, "counts": gate.counts(run),
+        "mode": run.mode, "mode_text": MODES.get(run.mode, run.mode),
         "problems": problems, "gate": "strict", "ok": not problems,
         "complete": not any(ps for kind, ps in found if kind != "baseline"),
     }
@@ -245,7 +260,11 @@ def wp_md(w):
           f"{w['goals']} goals, {w['smoke_passed']}/{w['smoke']} smoke tests; by prover: "
           f"{json.dumps(w['by_prover'], sort_keys=True)}; smoke canary: {w['smoke_canary']}",
           f"- WP modules: {len(w['modules_run'])} run by Frama-C in this run, every VC generated "
-          f"from the current source ({names(w['modules_run'])})",
+          f"from the current source ({names(w['modules_run'])})"]
+    if w["modules_replayed_local"]:
+        md.append(f"- WP modules replayed, NOT proved in this run (make reprove: inputs identical "
+                  f"to this tree's last run): {names(w['modules_replayed_local'])}")
+    md += [
           f"- WP prover results of the modules run: {w['cache_fresh']} from provers run in this "
           f"run, {w['cache_replayed']} replayed from the WP cache (verdicts of byte-identical "
           "prover tasks recorded in proofs/wp/cache; assumption W4; `make prove WP_CACHE=none` "
@@ -335,7 +354,8 @@ def report_md(run, summary, table):
     verdict = "everything proved" if summary["ok"] else "PROVE FAILED"
     if summary["ok"] and summary.get("shard"):
         verdict = f"shard {summary['shard']}: partial, everything it ran proved"
-    md = ["# Metronome proof report", "", f"Result: **{verdict}** (strict gate)", ""]
+    md = ["# Metronome proof report", "", f"Result: **{verdict}** (strict gate)", "",
+          f"Run: {summary['mode_text']}", ""]
     md += [f"- {p}" for p in summary["problems"]]
     if run.versions:
         md += ["", "## Tools", "", "```", run.versions, "```"]
@@ -357,6 +377,7 @@ def console(run, summary, table):
         print("wp cache " + line)
     for k, v in sorted(summary["counts"].items()):
         print(f"{k:22s} {v}")
+    print(f"run: {summary['mode_text']}")
     print(f"report: {run.build}/proof/report.md, {run.build}/proof/summary.json, "
           f"{run.build}/proof/junit.xml")
     if summary["problems"]:
@@ -370,7 +391,13 @@ def console(run, summary, table):
         print(f"PROVE OK: shard {summary['shard']}: partial: everything this shard ran passed "
               "(the verdict is the merge's: make prove-merge)")
         return 0
-    print("PROVE OK: everything proved (strict gate)")
+    replayed = (summary["wp"] or {}).get("modules_replayed_local") or []
+    if replayed:
+        print(f"REPROVE OK: everything run passed the strict gate; WP modules replayed from "
+              f"this tree's last run, not proved now: {', '.join(replayed)} (make prove "
+              "proves all)")
+        return 0
+    print(f"PROVE OK: everything proved (strict gate, {run.mode})")
     return 0
 
 

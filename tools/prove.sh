@@ -42,8 +42,11 @@ rm -rf "$OUT/shard"
 tools/bootstrap.sh prove | tee "$OUT/versions.txt"
 [ "${PIPESTATUS[0]}" -eq 0 ] || { echo "prove: tool installation failed"; exit 1; }
 
-# cold: nothing reused (make prove-cold); warm: verdict caches and records in use.
-if [ -n "${PROVE_COLD:-}" ]; then echo cold >"$OUT/cache.txt"; else echo warm >"$OUT/cache.txt"; fi
+# cold: nothing reused (make prove-cold); warm: verdict caches and records in use;
+# reprove (make reprove): WP modules whose inputs are those of this tree's last run are replayed.
+if [ -n "${PROVE_COLD:-}" ]; then echo cold >"$OUT/cache.txt"
+elif [ "${WP_REUSE_LOCAL:-}" = yes ]; then echo reprove >"$OUT/cache.txt"
+else echo warm >"$OUT/cache.txt"; fi
 
 lane1_default="wp"
 lane2_default="cbmc cbmc-test chibios-cbmc tla tla-trace-mission"

@@ -129,6 +129,13 @@ def module_stats(module, wp_dir):
     times, lines = parse_log(os.path.join(d, "wp.log"))
     res["cache_replayed"], res["cache_fresh"] = wp_cache.count(os.path.join(d, "wp.log"))
     res["fatal"], res["info"] = log_findings(module, lines)
+    # make reprove: the module's Frama-C run was skipped because its inputs are identical to
+    # those of this tree's last run (replayed.txt: that run's time); not re-proved now.
+    rfile = os.path.join(d, "replayed.txt")
+    res["replayed_local"] = (open(rfile, encoding="utf-8").read().strip() or "?") \
+        if os.path.exists(rfile) else None
+    if res["replayed_local"]:
+        res["cache_replayed"], res["cache_fresh"] = 0, 0
     tfile = os.path.join(d, "time.txt")
     if os.path.exists(tfile):
         try:
@@ -237,8 +244,10 @@ def gate(args):
                       not s["fatal"] and s["goals"] > 0) else "  <-- FAIL"
         out.append(f"{s['module']:44} {s['proved']:>5}/{s['goals']:<5} "
                    f"{s['smoke_passed']:>4}/{s['smoke']:<4} {fmt_time(s['time_s']):>8}{flag}  "
-                   f"(prover verdicts: {s.get('cache_replayed') or 0} reused, "
-                   f"{s.get('cache_fresh') or 0} fresh)")
+                   + (f"(REPLAYED from this tree's run of {s['replayed_local']}, identical "
+                      "inputs: not re-proved now)" if s["replayed_local"] else
+                      f"(prover verdicts: {s.get('cache_replayed') or 0} reused, "
+                      f"{s.get('cache_fresh') or 0} fresh)"))
         if not args.quiet:
             for fn in sorted(s["functions"]):
                 f = s["functions"][fn]
@@ -260,9 +269,14 @@ def gate(args):
     out.append(f"prover verdicts (goals and smoke tests): {fresh} from provers run now, "
                f"{replayed} reused from the WP cache (verdicts recorded for byte-identical prover "
                "tasks; proofs/wp/cache, assumption W4; WP_CACHE=none runs every prover)")
-    run = [s["module"] for s in stats if not s["missing"]]
+    run = [s["module"] for s in stats if not s["missing"] and not s["replayed_local"]]
+    replayed_local = [s["module"] for s in stats if not s["missing"] and s["replayed_local"]]
     out.append(f"modules: {len(run)} run by Frama-C now, every VC generated from the current "
                "source" + (f" ({', '.join(run)})" if run else ""))
+    if replayed_local:
+        out.append(f"modules: {len(replayed_local)} replayed, not proved in this run (make "
+                   "reprove: inputs identical to this tree's last run of the module: "
+                   f"{', '.join(replayed_local)})")
     problems = []
     for s in stats:
         problems += [f"{s['module']}: unproved: {x}" for x in s["failures"]]
@@ -296,13 +310,15 @@ def gate(args):
         "modules": {s["module"]: {k: s[k] for k in ("goals", "proved", "smoke", "smoke_passed",
                                                     "time_s", "prover_time_s", "by_prover",
                                                     "cache_replayed", "cache_fresh",
-                                                    "functions", "failures", "fatal")}
+                                                    "functions", "failures", "fatal",
+                                                    "replayed_local")}
                     for s in stats},
         "goals": tot["goals"], "proved": tot["proved"],
         "smoke": tot["smoke"], "smoke_passed": tot["smoke_passed"],
         "by_prover": by_prover,
         "cache_replayed": replayed, "cache_fresh": fresh,
         "modules_run": run,
+        "modules_replayed_local": replayed_local,
         "acsl_forbidden": acsl,
         "smoke_canary": canary,
         "pass": ok,

@@ -494,6 +494,48 @@ def test_committed_baseline_is_the_default_floor(proof):
     assert_fails(res, f"translator.passed = 1 < {floor}", "proofs/baseline.json")
 
 
+def put_mode(proof, mode):
+    with open(os.path.join(proof.proof, "cache.txt"), "w", encoding="utf-8") as f:
+        f.write(mode + "\n")
+
+
+@pytest.mark.parametrize("mode,words", [("cold", "every cache emptied"),
+                                         ("warm", "Frama-C on every module from source")])
+def test_report_names_the_run_mode(proof, mode, words):
+    put_mode(proof, mode)
+    res = proof.run()
+    assert_passes(res)
+    assert res.summary["mode"] == mode and words in res.summary["mode_text"]
+    assert f"run: {mode} (" in res.out and f"PROVE OK: everything proved (strict gate, {mode})" \
+        in res.out
+    with open(os.path.join(proof.proof, "report.md"), encoding="utf-8") as f:
+        assert f"Run: {mode} (" in f.read()
+
+
+def replay_sched(wp):
+    wp["modules"]["sched"]["replayed_local"] = "2026-11-26 22:16:37 UTC"
+    wp["modules_run"] = ["ring"]
+    wp["modules_replayed_local"] = ["sched"]
+
+
+@pytest.mark.parametrize("mode", ["warm", "cold"])
+def test_wp_module_replayed_from_a_local_run_fails_in_make_prove(proof, mode):
+    put_mode(proof, mode)
+    proof.edit("wp/summary.json", replay_sched)
+    assert_fails(proof.run(), "WP module sched", f"not proved in this {mode} run")
+
+
+def test_reprove_passes_and_names_the_replayed_modules(proof):
+    put_mode(proof, "reprove")
+    proof.edit("wp/summary.json", replay_sched)
+    res = proof.run()
+    assert res.rc == 0 and res.problems == [], res.out
+    assert "REPROVE OK" in res.out and "not proved now: sched" in res.out
+    assert "\nPROVE OK" not in res.out
+    with open(os.path.join(proof.proof, "report.md"), encoding="utf-8") as f:
+        assert "WP modules replayed, NOT proved in this run" in f.read()
+
+
 @pytest.mark.parametrize("mode", ["baseline", "full"])
 def test_prove_gate_does_not_soften_the_gate(proof, mode):
     proof.edit("wp/summary.json", unprove)
