@@ -77,7 +77,7 @@ TEST_HDR := $(wildcard tests/*.h)
 define test_bin
 $(BUILD)/$(1)/mt_tests: $(TEST_SRC) $(TEST_HDR) $(BUILD)/$(1)/libmt.a $(BUILD)/$(1)/libmt_posix.a \
                         $(BUILD)/$(1)/libmt_mission_host.a
-	$(2) $(WARN_CXX) $(3) $(KERNEL_INC) -Ihal_posix -Itests -Itools/mission $(TEST_SRC) \
+	$(2) $(WARN_CXX) $(3) $(KERNEL_INC) -Ihal_posix -Itests -Imission $(TEST_SRC) \
 	    $(BUILD)/$(1)/libmt_mission_host.a $(BUILD)/$(1)/libmt_posix.a $(BUILD)/$(1)/libmt.a \
 	    -lgtest -lgtest_main -pthread -lm -o $$@
 endef
@@ -151,80 +151,5 @@ clean:
 -include hal_chibios/mk/targets.mk
 -include vehicle/vehicle.mk
 -include tools/tools.mk
+-include mission/mission.mk
 
-# ---------------------------------------------------------------- mission (sequencer, files, tool)
-MISSION_HOST_SRC := $(wildcard tools/mission/wpl.c tools/mission/report.c)
-MISSION_TEST_SRC := $(wildcard tests/test_mission*.cpp)
-WARN_HOST := -std=c11 -Wall -Wextra -Wshadow -Wundef -Wformat=2 -Werror
-
-# $(call mission_host_lib,NAME,CC,FLAGS): the file layer for one test build
-define mission_host_lib
-$(BUILD)/$(1)/obj/mission/%.o: tools/mission/%.c $$(wildcard tools/mission/*.h kernel/include/mt/*.h)
-	@mkdir -p $$(@D)
-	$(2) $(WARN_HOST) $(3) $(KERNEL_INC) -Itools/mission -c $$< -o $$@
-$(BUILD)/$(1)/libmt_mission_host.a: $(patsubst tools/mission/%.c,$(BUILD)/$(1)/obj/mission/%.o,$(MISSION_HOST_SRC))
-	@mkdir -p $$(@D)
-	ar rcs $$@ $$^
-endef
-$(eval $(call mission_host_lib,gcc,gcc,-O2 -g))
-$(eval $(call mission_host_lib,clang,clang,-O2 -g))
-$(eval $(call mission_host_lib,asan,clang,$(SAN_ASAN)))
-$(eval $(call mission_host_lib,ubsan,clang,$(SAN_UBSAN)))
-$(eval $(call mission_host_lib,tsan,clang,$(SAN_TSAN)))
-$(eval $(call mission_host_lib,cov,gcc,-O0 -g --coverage))
-$(eval $(call host_lib,asanubsan,clang,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
-$(eval $(call mission_host_lib,asanubsan,clang,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
-
-.PHONY: mission-tool test-mission test-mission-tool fuzz
-mission-tool: $(BUILD)/mt-mission
-$(BUILD)/mt-mission: tools/mission/main.c $(BUILD)/gcc/libmt_mission_host.a $(BUILD)/gcc/libmt.a
-	gcc $(WARN_HOST) -O2 -g $(KERNEL_INC) -Itools/mission $< $(BUILD)/gcc/libmt_mission_host.a \
-	    $(BUILD)/gcc/libmt.a -lm -o $@
-
-# $(call mission_test_bin,NAME,CXX,FLAGS)
-define mission_test_bin
-$(BUILD)/$(1)/mt_mission_tests: $(MISSION_TEST_SRC) tests/mission_test_util.h $(BUILD)/$(1)/libmt.a \
-                                $(BUILD)/$(1)/libmt_mission_host.a
-	$(2) $(WARN_CXX) $(3) $(KERNEL_INC) -Itests -Itools/mission $(MISSION_TEST_SRC) \
-	    $(BUILD)/$(1)/libmt_mission_host.a $(BUILD)/$(1)/libmt.a -lgtest -lgtest_main -pthread -lm -o $$@
-endef
-$(eval $(call mission_test_bin,gcc,g++,-O2 -g))
-$(eval $(call mission_test_bin,asanubsan,clang++,$(SAN_ASAN) -fsanitize=undefined -fno-sanitize-recover=all))
-
-test-mission: $(BUILD)/gcc/mt_mission_tests $(BUILD)/asanubsan/mt_mission_tests
-	$(BUILD)/gcc/mt_mission_tests --gtest_brief=1
-	ASAN_OPTIONS=detect_leaks=1 $(BUILD)/asanubsan/mt_mission_tests --gtest_brief=1
-	@$(MAKE) --no-print-directory test-mission-tool
-
-# mt-mission over the committed mission files (part of make test; the gtest suites of the
-# mission module are in every mt_tests build).
-test-mission-tool: $(BUILD)/mt-mission
-	@set -e; for f in tests/missions/*.waypoints; do \
-	    $(BUILD)/mt-mission check --json $$f >/dev/null || { echo "mt-mission: $$f should be valid"; exit 1; }; \
-	done; \
-	for f in tests/missions/bad/*.waypoints; do \
-	    rc=0; $(BUILD)/mt-mission check $$f >/dev/null || rc=$$?; \
-	    [ $$rc -eq 1 ] || { echo "mt-mission: $$f should be invalid (exit 1), got $$rc"; exit 1; }; \
-	done; echo "mt-mission: tests/missions/*.waypoints valid, tests/missions/bad/* rejected"
-
-# libFuzzer (clang). FUZZ_SECONDS is the time per target (3 targets).
-FUZZ_SECONDS ?= 10
-FUZZ_FLAGS := -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
-FUZZ_TARGETS := fuzz_wpl fuzz_sequencer fuzz_roundtrip
-$(BUILD)/fuzz/%: fuzz/mission/%.c $(MISSION_HOST_SRC) $(wildcard tools/mission/*.h) kernel/src/mission.c \
-                 kernel/src/mission_invoke.c kernel/src/status.c $(wildcard kernel/include/mt/*.h)
-	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) $(KERNEL_INC) -Ikernel/src -Itools/mission $< $(MISSION_HOST_SRC) \
-	    kernel/src/mission.c kernel/src/mission_invoke.c kernel/src/status.c -lm -o $@
-fuzz: deps-test
-	@$(MAKE) --no-print-directory $(addprefix $(BUILD)/fuzz/,$(FUZZ_TARGETS))
-	@set -e; for t in $(FUZZ_TARGETS); do \
-	    mkdir -p $(BUILD)/fuzz/corpus/$$t $(BUILD)/fuzz/artifacts; \
-	    echo "== $$t ($(FUZZ_SECONDS) s, seeds fuzz/mission/corpus/$$t)"; \
-	    rc=0; $(BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -print_final_stats=1 \
-	        -artifact_prefix=$(BUILD)/fuzz/artifacts/$$t- \
-	        $(BUILD)/fuzz/corpus/$$t fuzz/mission/corpus/$$t >$(BUILD)/fuzz/$$t.log 2>&1 || rc=$$?; \
-	    grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|==[0-9]+==ERROR|SUMMARY)" \
-	        $(BUILD)/fuzz/$$t.log || true; \
-	    [ $$rc -eq 0 ] || { tail -40 $(BUILD)/fuzz/$$t.log; echo "fuzz: $$t failed (exit $$rc)"; exit 1; }; \
-	done

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Mission files (tools/mission/wpl.h, report.h): QGC WPL 110 reading, writing,
+// Mission files (mission/wpl.h, report.h): QGC WPL 110 reading, writing,
 // round trip, precise errors, and the execution plan of `mt-mission check`.
 #include <gtest/gtest.h>
 

@@ -16,7 +16,7 @@ VEH_SRC      := $(wildcard vehicle/src/*.c) $(wildcard vehicle/sim/*.c) \
 VEH_SITL_SRC := vehicle/deploy/sitl/main.c
 VEH_HDR      := $(wildcard vehicle/src/*.h vehicle/sim/*.h vehicle/deploy/*.h) vehicle/tasks.def
 VEH_INC      := -Ivehicle -Ivehicle/src -Ivehicle/sim -Ivehicle/deploy $(KERNEL_INC) -Ihal_posix \
-                -Itools/mission
+                -Imission
 # Floating point is fine here (not in kernel/); the kernel's warning set plus float checks.
 VEH_WARN     := -std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes \
                 -Wmissing-prototypes -Wundef -Wformat=2 -Wdouble-promotion -Wconversion \

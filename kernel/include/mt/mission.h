@@ -36,7 +36,7 @@
  *   only where AP allows it). x/y are latitude/longitude in 1e-7 degrees for
  *   every command (other uses of x/y are limited to the same range), z is in
  *   centimetres. Converting a file's floats (and rejecting inf) is the file
- *   layer's job (tools/mission/wpl.h).
+ *   layer's job (mission/wpl.h).
  *
  * Reference defects fixed: A-1 the nav advance either loads a nav command or
  * completes the mission (no 255-iteration wrap); A-2 do-only loops are
