@@ -17,25 +17,42 @@ WARN_CXX   := -std=c++17 -Wall -Wextra -Wshadow -Werror
 .PHONY: help all kernel test test-fast test-asan test-ubsan test-tsan test-clang cross lint \
         format-check demo deps-test deps-cross deps-lint clean
 
+# `make help`: the targets by purpose (each has a rule; tests/proofs/test_make_targets.py).
 help:
-	@echo "make            build the kernel and host port with gcc and clang (warnings are errors)"
-	@echo "make test       install test deps, run the googletest suite: gcc, clang, ASan, UBSan, TSan;"
-	@echo "                mt-mission over the mission files; the vehicle tests (make test-vehicle);"
-	@echo "                the proof tools' tests (make test-proof-tools)"
-	@echo "make cross      build the kernel for Cortex-M4 and print sizes per module"
-	@echo "make lint       cppcheck (MISRA C:2012 addon) and clang-tidy over kernel/"
-	@echo "make demo       run a task table on the host port and print its statistics"
-	@echo "make clean"
-	@echo "make mission-tool   build/mt-mission (check QGC WPL 110 mission files, print the plan)"
-	@echo "make test-mission   mission tests (gcc, ASan+UBSan) and mt-mission over tests/missions"
-	@echo "make fuzz           libFuzzer targets (clang, ASan+UBSan), short run (FUZZ_SECONDS)"
-	@echo "make sitl [MISSION=vehicle/missions/<file>.waypoints] [SITL_ARGS=...]   fly the example vehicle"
-	@echo "make sched-check    Z3: is the vehicle's task table (vehicle/tasks.def) schedulable?"
-	@echo "make test-vehicle   SITL flights, fault injection, bad missions, sched-check vs SITL"
-	@echo "make test-proof-tools   pytest: the proof report's strict gate fed every kind of failure,"
-	@echo "                    the canary checker, the mutants' rotation, the shard plan and merge"
-	@echo "make prove      install Frama-C/Why3/Z3/CVC4/CBMC/TLC, prove everything, strict gate"
-	@echo "make prove-cold the same with every cache emptied;  make prove-selftest: seeded bugs"
+	@echo "Build"
+	@echo "  make                 kernel and host port with gcc and clang (warnings are errors)"
+	@echo "  make cross           the kernel for Cortex-M4, bytes per module"
+	@echo "  make mission-tool    build/mt-mission (check QGC WPL 110 mission files, print the plan)"
+	@echo "  make clean"
+	@echo "Test"
+	@echo "  make test            install test deps; googletest suite under gcc, clang, ASan, UBSan,"
+	@echo "                       TSan; mt-mission over the mission files; test-vehicle;"
+	@echo "                       test-proof-tools"
+	@echo "  make test-fast       the suite once (gcc);  make test-clang | test-asan | test-ubsan |"
+	@echo "                       test-tsan: the suite under one of the other builds"
+	@echo "  make test-mission    mission tests (gcc, ASan+UBSan) and mt-mission over tests/missions"
+	@echo "  make test-vehicle    SITL flights, fault injection, bad missions, sched-check vs SITL"
+	@echo "  make test-proof-tools  pytest: the strict gate fed every kind of failure, the canary"
+	@echo "                       checker, the mutants' rotation, shard plan and merge, reprove"
+	@echo "  make fuzz            libFuzzer targets (clang, ASan+UBSan), short run (FUZZ_SECONDS)"
+	@echo "  make lint            cppcheck (MISRA C:2012 addon) and clang-tidy over kernel/"
+	@echo "  make format-check    clang-format over the C sources"
+	@echo "Prove"
+	@echo "  make prove           install Frama-C/Why3/Z3/CVC4/CBMC/TLC, prove everything, strict gate"
+	@echo "  make prove-cold      the same with every cache emptied, plus cbmc-max; the report says cold"
+	@echo "  make reprove         developer shortcut: WP modules with unchanged inputs replayed, not proved"
+	@echo "  make prove-selftest  seeded bugs (proofs/mutants.json), each rejected as its entry says"
+	@echo "  make prove PROVE_SHARD=i/N;  make prove-merge SHARDS=\"dir ...\"   proofs over N machines"
+	@echo "  make wp | wp-<module> | wp-gate | wp-canary | wp-diversity | wp-cache-save"
+	@echo "  make cbmc | cbmc-<function> | cbmc-max | cbmc-test"
+	@echo "  make tla | tla-deep | tla-trace | tla-trace-mission | tla-update"
+	@echo "  make chibios-prove   WP and CBMC of the ChibiOS port's time arithmetic"
+	@echo "Vehicle, firmware, performance"
+	@echo "  make sitl [MISSION=vehicle/missions/<file>.waypoints] [SITL_ARGS=...]   fly the example"
+	@echo "  make sched-check     Z3: is the vehicle's task table (vehicle/tasks.def) schedulable?"
+	@echo "  make firmware CHIBIOS=/path [BOARD=...] [APP=...];  make qemu-smoke CHIBIOS=/path"
+	@echo "  make demo            run a task table on the host port and print its statistics"
+	@echo "  make bench           benchmarks side by side with boost and ArduPilot-style references"
 
 # ---------------------------------------------------------------- host builds
 # $(call host_lib,NAME,CC,EXTRA_CFLAGS)
@@ -105,6 +122,12 @@ test: deps-test
 
 test-fast: $(BUILD)/gcc/mt_tests
 	$(BUILD)/gcc/mt_tests
+
+# The suite under one build: make test-clang, test-asan, test-ubsan, test-tsan.
+test-clang test-asan test-ubsan test-tsan: test-%: deps-test
+	@$(MAKE) --no-print-directory $(BUILD)/$*/mt_tests
+	TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" ASAN_OPTIONS=detect_leaks=1 \
+	    $(BUILD)/$*/mt_tests --gtest_brief=1
 
 # ---------------------------------------------------------------- cross
 ARM_CC    := arm-none-eabi-gcc

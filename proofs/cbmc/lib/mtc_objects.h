@@ -7,7 +7,7 @@
  * nondeterministic, except what is needed to give it storage of the right size. The
  * function's requires, assumed by the harness, then selects the legal states. Values are
  * not bounded: indices, capacities, counters and times range up to their types' maxima.
- * Only lengths that drive loops are bounded (ASSUMPTIONS.md lists every bound).
+ * Only lengths that drive loops are bounded (proofs/assumptions.json lists every bound).
  */
 #ifndef MTC_OBJECTS_H
 #define MTC_OBJECTS_H
@@ -19,7 +19,7 @@
 #define MTC_ELEM_MAX 4u  /* bytes per object-ring element */
 #define MTC_TASKS_MAX 3u /* entries in a task table */
 
-/* Ring capacities (ASSUMPTIONS.md, B2). `make cbmc`: every capacity in [1, MTC_CAP_SMALL],
+/* Ring capacities (proofs/assumptions.json, B2). `make cbmc`: every capacity in [1, MTC_CAP_SMALL],
  * so every wrap pattern of the mirror indices occurs, with indices, counters and lengths
  * nondeterministic. `make cbmc-max` (MTC_BIG): the two largest capacities (2^30 - 1 and
  * 2^30 for the byte ring; for the object ring the two largest for each element size), with
@@ -76,11 +76,11 @@ uint8_t *mtc_bytes(uint32_t n);
 
 /* One of the n values (nondeterministic choice). Used for the operand of a non-linear
  * operation (a product or quotient of two variables) whose other operand stays fully
- * nondeterministic (ASSUMPTIONS.md, B3). */
+ * nondeterministic (proofs/assumptions.json, B3). */
 uint32_t mtc_pick_u32(const uint32_t *vals, uint32_t n);
 #define MTC_PICK(arr) mtc_pick_u32((arr), (uint32_t)(sizeof(arr) / sizeof((arr)[0])))
 
-/* A nondeterministic non-NULL callback (never called: assumption A1, see ASSUMPTIONS.md). */
+/* A nondeterministic non-NULL callback (never called: assumption A1, proofs/assumptions.json). */
 void *mtc_callback(void);
 
 /* A work queue (MT_CFG_WQ_MAX_ITEMS = 4, Makefile.common, assumption B1) with every field
