@@ -5,14 +5,15 @@
 #   make sitl [MISSION=vehicle/missions/<file>.waypoints] [SITL_ARGS=...]
 #   make sched-check [SCHED_TABLE=...]  Z3 schedulability check of vehicle/tasks.def (exit 1:
 #                                    not schedulable, e.g. SCHED_TABLE=tests/vehicle/overloaded.def)
-#   make test-vehicle                SITL flights, fault injection, bad missions,
-#                                    sched-check against SITL (tests/vehicle/)
+#   make test-vehicle                the vehicle's file-level call graph is acyclic; SITL
+#                                    flights, fault injection, bad missions, sched-check
+#                                    against SITL (tests/vehicle/)
 #
 # The firmware build of the same vehicle: make firmware CHIBIOS=... APP=vehicle
 # (vehicle/deploy/chibios/, hal_chibios/mk/targets.mk).
 
 VEH_SRC      := $(wildcard vehicle/src/*.c) $(wildcard vehicle/sim/*.c) \
-                vehicle/deploy/builtin_mission.c
+                vehicle/deploy/builtin_mission.c vehicle/deploy/startup.c
 VEH_SITL_SRC := vehicle/deploy/sitl/main.c
 VEH_HDR      := $(wildcard vehicle/src/*.h vehicle/sim/*.h vehicle/deploy/*.h) vehicle/tasks.def
 VEH_INC      := -Ivehicle -Ivehicle/src -Ivehicle/sim -Ivehicle/deploy $(KERNEL_INC) -Ihal_posix \
@@ -61,4 +62,6 @@ sched-check: deps-sched
 
 test-vehicle: deps-sched $(BUILD)/sitl/metronome-sitl $(BUILD)/sitl/metronome-sitl-overloaded \
               $(BUILD)/sitl-asan/metronome-sitl $(BUILD)/sitl-tsan/metronome-sitl $(BUILD)/sitl/test_vprint
+	$(SCHED_PYTHON) tests/vehicle/check_callgraph.py gcc $(VEH_WARN) $(VEH_INC) \
+	    -Ihal_chibios/port -Ihal_chibios/include
 	$(SCHED_PYTHON) tests/vehicle/run_tests.py --build $(BUILD)

@@ -18,7 +18,9 @@
  * Any other command is refused by its start callback, which AP_Mission's
  * rules turn into "skipped" (printed, never silent).
  * The callbacks only read the mission object (assumption A1 of the kernel's
- * proofs): they change the vehicle, never the sequencer.
+ * proofs): they change the vehicle, never the sequencer. They take the newest
+ * `estimate` when they start, and fly the vehicle through posctl.c (arming,
+ * modes, legs) and the nav command of the flight state.
  */
 #include "veh_int.h"
 
@@ -58,20 +60,21 @@ const char *veh_cmd_name(uint16_t id)
     }
 }
 
-void veh_cmd_location(const veh_t *v, const mt_mission_cmd_t *c, float out[3], bool *has_xy)
+/* Location of a mission command in the NED frame (z: relative altitude down). */
+static void cmd_location(const veh_t *v, const mt_mission_cmd_t *c, float out[3], bool *has_xy)
 {
-    const veh_state_t *s = &v->s;
+    const veh_estimate_msg_t *est = &v->au.est;
     float alt = (float)c->z * 0.01f;
 
     *has_xy = (c->x != 0) || (c->y != 0);
     if (*has_xy) {
-        vm_ne_from_ll(s->home.lat, s->home.lon, c->x, c->y, &out[0], &out[1]);
+        vm_ne_from_ll(v->home.lat, v->home.lon, c->x, c->y, &out[0], &out[1]);
     } else {
-        out[0] = s->pos[0];
-        out[1] = s->pos[1];
+        out[0] = est->pos[0];
+        out[1] = est->pos[1];
     }
     if ((c->frame == 0u) || (c->frame == 5u)) {
-        alt -= (float)s->home.alt_cm * 0.01f; /* AMSL to above home */
+        alt -= (float)v->home.alt_cm * 0.01f; /* AMSL to above home */
     }
     out[2] = -alt;
 }
@@ -85,7 +88,8 @@ static char *fmt_m(char *buf, float x)
 
 static bool start_nav(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
+    const veh_estimate_msg_t *est = &v->au.est;
     veh_navcmd_t *n = &s->nav;
     bool has_xy;
     float loc[3];
@@ -101,11 +105,11 @@ static bool start_nav(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
     n->radius = WP_RADIUS_DEFAULT;
     n->hold_s = 0.0f;
     s->yaw_fixed = false; /* CONDITION_YAW holds until the next nav command */
-    veh_cmd_location(v, c, loc, &has_xy);
+    cmd_location(v, c, loc, &has_xy);
 
     if (!s->armed && (c->id != MT_MAV_CMD_TAKEOFF)) {
-        veh_say(v, "mission: #%u %s skipped: the vehicle has landed (only TAKEOFF re-arms it)",
-                index, veh_cmd_name(c->id));
+        veh_say("mission: #%u %s skipped: the vehicle has landed (only TAKEOFF re-arms it)", index,
+                veh_cmd_name(c->id));
         return false;
     }
     switch (c->id) {
@@ -114,11 +118,11 @@ static bool start_nav(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
             return false;
         }
         n->kind = VEH_NAV_TAKEOFF;
-        n->dest[0] = s->pos[0];
-        n->dest[1] = s->pos[1];
+        n->dest[0] = est->pos[0];
+        n->dest[1] = est->pos[1];
         n->dest[2] = fminf(loc[2], -1.0f);
         veh_leg_start(v, n->dest);
-        veh_say(v, "mission: #%u TAKEOFF started, climb to %s m", index, fmt_m(a, -n->dest[2]));
+        veh_say("mission: #%u TAKEOFF started, climb to %s m", index, fmt_m(a, -n->dest[2]));
         return true;
     case MT_MAV_CMD_WAYPOINT:
     case MT_MAV_CMD_SPLINE_WAYPOINT:
@@ -146,8 +150,8 @@ static bool start_nav(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
         n->circle_dir = (par(c, 2) < 0.0f) ? -1.0f : 1.0f;
         {
             /* approach the circle at its nearest point */
-            float dn = s->pos[0] - loc[0];
-            float de = s->pos[1] - loc[1];
+            float dn = est->pos[0] - loc[0];
+            float de = est->pos[1] - loc[1];
             float d = vm_norm2(dn, de);
             float edge[3];
             if (d < 0.1f) {
@@ -163,37 +167,37 @@ static bool start_nav(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
             n->dest[2] = loc[2];
             veh_leg_start(v, edge);
         }
-        veh_say(v, "mission: #%u LOITER_TURNS started, %s turns of %s m", index, fmt_m(a, n->turns),
+        veh_say("mission: #%u LOITER_TURNS started, %s turns of %s m", index, fmt_m(a, n->turns),
                 fmt_m(b, n->circle_r));
         return true;
     case MT_MAV_CMD_LAND:
         n->kind = VEH_NAV_LAND;
         n->dest[0] = loc[0];
         n->dest[1] = loc[1];
-        n->dest[2] = s->pos[2]; /* reach x/y at the current altitude, then descend */
+        n->dest[2] = est->pos[2]; /* reach x/y at the current altitude, then descend */
         s->landed_ticks = 0u;
         veh_leg_start(v, n->dest);
-        veh_say(v, "mission: #%u LAND started, %s m away", index,
-                fmt_m(a, veh_dist_xy(s->pos, n->dest)));
+        veh_say("mission: #%u LAND started, %s m away", index,
+                fmt_m(a, veh_dist_xy(est->pos, n->dest)));
         return true;
     case MT_MAV_CMD_RETURN_TO_LAUNCH: {
         float up[3];
         n->kind = VEH_NAV_RTL;
-        s->rtl_alt = fmaxf(RTL_ALT_MIN, -s->pos[2]);
-        up[0] = s->pos[0];
-        up[1] = s->pos[1];
+        s->rtl_alt = fmaxf(RTL_ALT_MIN, -est->pos[2]);
+        up[0] = est->pos[0];
+        up[1] = est->pos[1];
         up[2] = -s->rtl_alt;
         n->dest[0] = 0.0f;
         n->dest[1] = 0.0f;
         n->dest[2] = 0.0f;
         s->landed_ticks = 0u;
         veh_leg_start(v, up);
-        veh_say(v, "mission: #%u RTL started, return at %s m, %s m from home", index,
-                fmt_m(a, s->rtl_alt), fmt_m(b, vm_norm2(s->pos[0], s->pos[1])));
+        veh_say("mission: #%u RTL started, return at %s m, %s m from home", index,
+                fmt_m(a, s->rtl_alt), fmt_m(b, vm_norm2(est->pos[0], est->pos[1])));
         return true;
     }
     default:
-        veh_say(v, "mission: #%u %s (%u) not supported by this vehicle: skipped", index,
+        veh_say("mission: #%u %s (%u) not supported by this vehicle: skipped", index,
                 veh_cmd_name(c->id), c->id);
         return false;
     }
@@ -202,8 +206,8 @@ static bool start_nav(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
     n->dest[1] = loc[1];
     n->dest[2] = loc[2];
     veh_leg_start(v, n->dest);
-    veh_say(v, "mission: #%u %s started, %s m away at %s m", index, veh_cmd_name(c->id),
-            fmt_m(a, veh_dist3(s->pos, n->dest)), fmt_m(b, -n->dest[2]));
+    veh_say("mission: #%u %s started, %s m away at %s m", index, veh_cmd_name(c->id),
+            fmt_m(a, veh_dist3(est->pos, n->dest)), fmt_m(b, -n->dest[2]));
     return true;
 }
 
@@ -211,13 +215,13 @@ static bool start_nav(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
 
 static bool start_do(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
 {
-    veh_state_t *s = &v->s;
-    veh_docmd_t *d = &s->doc;
+    veh_flight_t *s = &v->fl;
+    veh_docmd_t *d = &v->au.doc;
     char a[16];
 
     d->index = index;
     d->id = c->id;
-    d->start_us = veh_now(v);
+    d->start_us = veh_now();
     d->active = true;
     d->value = 0.0f;
     switch (c->id) {
@@ -225,45 +229,42 @@ static bool start_do(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
         if (par(c, 1) > 0.0f) {
             s->speed_xy = vm_clamp(par(c, 1), 0.5f, 15.0f);
         }
-        veh_say(v, "mission: #%u DO_CHANGE_SPEED started, speed %s m/s", index,
-                fmt_m(a, s->speed_xy));
+        veh_say("mission: #%u DO_CHANGE_SPEED started, speed %s m/s", index, fmt_m(a, s->speed_xy));
         break;
     case MT_MAV_CMD_DO_SET_SERVO: {
         int32_t ch = c->param[0] / MT_MISSION_MILLI;
         int32_t pwm = c->param[1] / MT_MISSION_MILLI;
         if ((ch < 1) || (ch > 16) || (pwm < 0) || (pwm > 3000)) {
-            veh_say(v, "mission: #%u DO_SET_SERVO refused: channel %d pwm %d", index, (int)ch,
+            veh_say("mission: #%u DO_SET_SERVO refused: channel %d pwm %d", index, (int)ch,
                     (int)pwm);
             return false;
         }
         v->plat->servo_write(v->plat->ctx, (uint8_t)ch, (uint16_t)pwm);
-        veh_say(v, "mission: #%u DO_SET_SERVO started, servo %d -> %d", index, (int)ch, (int)pwm);
+        veh_say("mission: #%u DO_SET_SERVO started, servo %d -> %d", index, (int)ch, (int)pwm);
         break;
     }
     case MT_MAV_CMD_DO_SET_HOME:
         if (c->param[0] == MT_MISSION_MILLI) {
-            veh_say(v,
-                    "mission: #%u DO_SET_HOME started, home stays at the launch point "
+            veh_say("mission: #%u DO_SET_HOME started, home stays at the launch point "
                     "(local frame)",
                     index);
         } else {
-            veh_say(v,
-                    "mission: #%u DO_SET_HOME started, home kept (moving home in flight is "
+            veh_say("mission: #%u DO_SET_HOME started, home kept (moving home in flight is "
                     "not supported)",
                     index);
         }
         break;
     case MT_MAV_CMD_DO_LAND_START:
-        veh_say(v, "mission: #%u DO_LAND_START (landing sequence marker)", index);
+        veh_say("mission: #%u DO_LAND_START (landing sequence marker)", index);
         break;
     case MT_MAV_CMD_CONDITION_DELAY:
         d->value = par(c, 0);
-        veh_say(v, "mission: #%u CONDITION_DELAY started, %s s", index, fmt_m(a, d->value));
+        veh_say("mission: #%u CONDITION_DELAY started, %s s", index, fmt_m(a, d->value));
         break;
     case MT_MAV_CMD_CONDITION_DISTANCE:
         d->value = par(c, 0);
-        veh_say(v, "mission: #%u CONDITION_DISTANCE started, until %s m from the destination",
-                index, fmt_m(a, d->value));
+        veh_say("mission: #%u CONDITION_DISTANCE started, until %s m from the destination", index,
+                fmt_m(a, d->value));
         break;
     case MT_MAV_CMD_CONDITION_YAW: {
         float target = par(c, 0) * VM_DEG2RAD;
@@ -277,13 +278,13 @@ static bool start_do(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
         s->yaw_rate = (rate > 1.0f) ? (rate * VM_DEG2RAD) : (60.0f * VM_DEG2RAD);
         s->yaw_fixed = true;
         d->value = s->yaw_goal;
-        veh_say(v, "mission: #%u CONDITION_YAW started, heading %s deg", index,
+        veh_say("mission: #%u CONDITION_YAW started, heading %s deg", index,
                 fmt_m(a, s->yaw_goal * VM_RAD2DEG));
         break;
     }
     default:
         d->active = false;
-        veh_say(v, "mission: #%u %s (%u) not supported by this vehicle: skipped", index,
+        veh_say("mission: #%u %s (%u) not supported by this vehicle: skipped", index,
                 veh_cmd_name(c->id), c->id);
         return false;
     }
@@ -292,26 +293,32 @@ static bool start_do(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
 
 static bool verify_do(veh_t *v, const mt_mission_cmd_t *c)
 {
-    veh_state_t *s = &v->s;
-    veh_docmd_t *d = &s->doc;
+    const veh_estimate_msg_t *est = &v->au.est;
+    veh_docmd_t *d = &v->au.doc;
 
     switch (c->id) {
-    case MT_MAV_CMD_CONDITION_DELAY:
-        return (float)(veh_now(v) - d->start_us) >= (d->value * 1.0e6f);
-    case MT_MAV_CMD_CONDITION_DISTANCE: return veh_dist_xy(s->pos, s->nav.dest) <= d->value;
+    case MT_MAV_CMD_CONDITION_DELAY: return (float)(veh_now() - d->start_us) >= (d->value * 1.0e6f);
+    case MT_MAV_CMD_CONDITION_DISTANCE: return veh_dist_xy(est->pos, v->fl.nav.dest) <= d->value;
     case MT_MAV_CMD_CONDITION_YAW:
-        return fabsf(vm_wrap_pi(s->att[2] - d->value)) < (3.0f * VM_DEG2RAD);
+        return fabsf(vm_wrap_pi(est->att[2] - d->value)) < (3.0f * VM_DEG2RAD);
     default: return true;
     }
 }
 
 /* ---- callbacks -------------------------------------------------------------------------- */
 
+/* The newest estimate into AUTO's copy. */
+static void est_refresh(veh_t *v)
+{
+    veh_latest(&v->au.est_sub, &v->au.est, (uint32_t)sizeof(v->au.est));
+}
+
 static bool cb_start(void *ctx, uint16_t index, const mt_mission_cmd_t *cmd)
 {
     veh_t *v = (veh_t *)ctx;
     bool ok;
 
+    est_refresh(v);
     if (mt_mission_kind_of(cmd->id) == MT_MISSION_KIND_NAV) {
         ok = start_nav(v, index, cmd);
     } else {
@@ -327,17 +334,19 @@ static bool cb_start(void *ctx, uint16_t index, const mt_mission_cmd_t *cmd)
 static bool cb_verify(void *ctx, uint16_t index, const mt_mission_cmd_t *cmd)
 {
     veh_t *v = (veh_t *)ctx;
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
+    const veh_estimate_msg_t *est = &v->au.est;
     char a[16];
 
+    est_refresh(v);
     if (mt_mission_kind_of(cmd->id) != MT_MISSION_KIND_NAV) {
         bool done = verify_do(v, cmd);
         if (done && (cmd->id >= MT_MAV_CMD_CONDITION_DELAY) &&
             (cmd->id <= MT_MAV_CMD_CONDITION_YAW)) {
-            veh_say(v, "mission: #%u %s done", index, veh_cmd_name(cmd->id));
+            veh_say("mission: #%u %s done", index, veh_cmd_name(cmd->id));
         }
         if (done) {
-            s->doc.active = false;
+            v->au.doc.active = false;
             veh_log_cmd(v, index, cmd->id, 2u);
         }
         return done;
@@ -348,10 +357,10 @@ static bool cb_verify(void *ctx, uint16_t index, const mt_mission_cmd_t *cmd)
     v->c.wps_reached++;
     veh_log_cmd(v, index, cmd->id, 2u);
     if ((cmd->id == MT_MAV_CMD_WAYPOINT) || (cmd->id == MT_MAV_CMD_SPLINE_WAYPOINT)) {
-        veh_say(v, "mission: waypoint #%u reached (%s m off)", index,
-                fmt_m(a, veh_dist3(s->pos, s->nav.dest)));
+        veh_say("mission: waypoint #%u reached (%s m off)", index,
+                fmt_m(a, veh_dist3(est->pos, s->nav.dest)));
     } else {
-        veh_say(v, "mission: #%u %s complete", index, veh_cmd_name(cmd->id));
+        veh_say("mission: #%u %s complete", index, veh_cmd_name(cmd->id));
     }
     return true;
 }
@@ -359,13 +368,13 @@ static bool cb_verify(void *ctx, uint16_t index, const mt_mission_cmd_t *cmd)
 static void cb_complete(void *ctx)
 {
     veh_t *v = (veh_t *)ctx;
-    veh_state_t *s = &v->s;
+    const veh_flight_t *s = &v->fl;
 
     v->c.completions++;
     veh_log_cmd(v, 0u, 0u, 3u);
-    veh_say(v, "mission: complete");
+    veh_say("mission: complete");
     if (s->armed) {
-        veh_say(v, "mission: vehicle still airborne, landing here");
+        veh_say("mission: vehicle still airborne, landing here");
         veh_set_mode(v, VEH_MODE_LAND);
     } else {
         veh_set_mode(v, VEH_MODE_STANDBY);
@@ -381,7 +390,7 @@ bool veh_auto_start(veh_t *v)
 {
     mt_status_t st = mt_mission_start(&v->mission);
     if (st != MT_OK) {
-        veh_say(v, "mission: start refused (%s)", mt_status_str(st));
+        veh_say("mission: start refused (%s)", mt_status_str(st));
         return false;
     }
     return true;
@@ -389,7 +398,7 @@ bool veh_auto_start(veh_t *v)
 
 void veh_mission_update(veh_t *v)
 {
-    if ((v->s.mode == VEH_MODE_AUTO) && v->mission_ok) {
+    if ((v->fl.mode == VEH_MODE_AUTO) && v->mission_ok) {
         mt_mission_update(&v->mission);
     }
 }

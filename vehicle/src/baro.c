@@ -5,7 +5,8 @@
  *        over the shared bus and publishes each sample on the baro link) and
  *        baro_update (50 Hz, main loop): takes the samples, averages them,
  *        calibrates the ground pressure, gives the altitude and corrects the
- *        vertical estimate.
+ *        vertical estimate: a stage of the estimator (takes the newest
+ *        `estimate`, corrects it, publishes it).
  */
 #include "veh_int.h"
 
@@ -35,17 +36,18 @@ void veh_baro_timer_proc(void *arg)
         v->baro_bus_fail++; /* implausible reading: a failed read, not a sample */
         return;
     }
-    veh_baro_link_publish(&v->baro, &smp);
+    veh_baro_link_publish(&v->baro_link, &smp);
 }
 
 void veh_baro_update(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    veh_baro_t *b = &v->baro;
+    veh_estimate_msg_t est;
     veh_baro_sample_t smp;
     float sum = 0.0f;
     uint32_t n = 0u;
 
-    while (veh_baro_link_take(&v->baro, &smp)) {
+    while (veh_baro_link_take(&v->baro_link, &smp)) {
         sum += smp.pressure_pa;
         n++;
     }
@@ -53,26 +55,31 @@ void veh_baro_update(veh_t *v)
     if (n == 0u) {
         return;
     }
-    if (!s->baro_ok) {
-        s->baro_cal_sum += sum;
-        s->baro_cal_n += n;
-        if (s->baro_cal_n >= CAL_SAMPLES) {
-            s->baro_p0 = s->baro_cal_sum / (float)s->baro_cal_n;
-            s->baro_ok = true;
+    if (!b->ok) {
+        b->cal_sum += sum;
+        b->cal_n += n;
+        if (b->cal_n >= CAL_SAMPLES) {
+            b->p0 = b->cal_sum / (float)b->cal_n;
+            b->ok = true;
+            veh_latest(&b->est, &est, (uint32_t)sizeof(est));
+            est.baro_ok = true;
+            (void)mt_topic_publish(&v->estimate, &est, (uint32_t)sizeof(est));
         }
         return;
     }
-    s->baro_alt = 44330.77f * (1.0f - powf((sum / (float)n) / s->baro_p0, 0.190263f));
+    b->alt = 44330.77f * (1.0f - powf((sum / (float)n) / b->p0, 0.190263f));
+    veh_latest(&b->est, &est, (uint32_t)sizeof(est));
     {
-        float e = s->baro_alt - (-s->pos[2]);
-        s->pos[2] -= K_POS * e;
-        s->vel[2] -= K_VEL * e;
+        float e = b->alt - (-est.pos[2]);
+        est.pos[2] -= K_POS * e;
+        est.vel[2] -= K_VEL * e;
     }
-    if ((v->log_runs % 5u) == 0u) {
+    (void)mt_topic_publish(&v->estimate, &est, (uint32_t)sizeof(est));
+    if ((veh_log_runs(v) % 5u) == 0u) {
         uint8_t rec[16];
-        int32_t alt_cm = (int32_t)lroundf(s->baro_alt * 100.0f);
+        int32_t alt_cm = (int32_t)lroundf(b->alt * 100.0f);
         uint32_t p8 = (uint32_t)((sum / (float)n) * 8.0f);
-        uint64_t t = veh_now(v); /* records carry the time they are written */
+        uint64_t t = veh_now(); /* records carry the time they are written */
         uint32_t i;
         for (i = 0u; i < 8u; i++) {
             rec[i] = (uint8_t)(t >> (8u * i));

@@ -4,7 +4,8 @@
  * @brief The battery monitor: an interval work item (3 Hz) on the vehicle's
  *        work queue reads the monitor over the shared sensor bus and publishes
  *        each reading on the `battery` topic; housekeeping (main loop)
- *        consumes the readings (house.c).
+ *        consumes the readings (house.c; its subscription is set up by the
+ *        topology, vehicle.c).
  *
  * The work item runs in the queue's thread (hal_posix, hal_chibios) or, in
  * simulated time, in the main loop's idle time (vehicle/deploy/sitl). It
@@ -47,7 +48,6 @@ mt_status_t veh_battery_init(veh_t *v)
     if (st != MT_OK) {
         return st;
     }
-    mt_sub_init(&v->battery_sub, &v->battery_topic, 0u);
     mt_wq_init(&v->wq, "veh_lp", MT_PRIO_IO, 1);
     mt_work_init(&v->battery_work, battery_work, v);
     st = mt_wq_attach(&v->wq, &v->battery_work);

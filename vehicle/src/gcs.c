@@ -3,7 +3,8 @@
  * @file gcs.c
  * @brief gcs_update (400 Hz): ground-station commands (arm and fly AUTO, stop,
  *        resume, land) with the pre-arm checks; telemetry_send (10 Hz): a
- *        status packet.
+ *        status packet. The estimate (and the sensors' health in it) comes from
+ *        the `estimate` topic; arming and modes go through posctl.c.
  */
 #include <string.h>
 
@@ -14,8 +15,10 @@
 /* Why the vehicle may not arm, or NULL. */
 static const char *prearm_failure(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    veh_estimate_msg_t est;
+    const veh_estimate_msg_t *s = &est;
 
+    veh_latest(&v->gcs.est_sub, &est, (uint32_t)sizeof(est));
     if (!v->mission_ok) {
         return "no valid mission loaded";
     }
@@ -25,7 +28,7 @@ static const char *prearm_failure(veh_t *v)
     if (!s->pos_ok || (s->gps_fixes < GPS_FIXES_TO_ARM)) {
         return "waiting for GPS";
     }
-    if (!s->bat_ok) {
+    if (!veh_battery_ok(v)) {
         return "battery monitor not read";
     }
     return NULL;
@@ -33,16 +36,16 @@ static const char *prearm_failure(veh_t *v)
 
 static void arm_auto(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    veh_gcs_t *s = &v->gcs;
     const char *why;
 
-    if (s->armed) {
+    if (v->fl.armed) {
         return;
     }
     why = prearm_failure(v);
     if (why != NULL) {
         if (!s->arm_refused_said || (strcmp(why, s->refuse_reason) != 0)) {
-            veh_say(v, "vehicle: arming refused: %s", why);
+            veh_say("vehicle: arming refused: %s", why);
             (void)vp_snprintf(s->refuse_reason, sizeof(s->refuse_reason), "%s", why);
             s->arm_refused_said = true;
         }
@@ -59,36 +62,36 @@ static void arm_auto(veh_t *v)
 
 void veh_gcs_update(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    const veh_flight_t *s = &v->fl;
     veh_gcs_cmd_t cmd = v->plat->gcs_poll(v->plat->ctx);
 
     switch (cmd) {
     case VEH_GCS_ARM_AUTO: arm_auto(v); break;
     case VEH_GCS_STOP:
         if ((s->mode == VEH_MODE_AUTO) && (mt_mission_stop(&v->mission) == MT_OK)) {
-            veh_say(v, "gcs: mission stopped at #%u, holding position", v->mission.nav);
+            veh_say("gcs: mission stopped at #%u, holding position", v->mission.nav);
             veh_set_mode(v, VEH_MODE_HOLD);
         } else {
-            veh_say(v, "gcs: stop refused (mode %s)", veh_mode_name(s->mode));
+            veh_say("gcs: stop refused (mode %s)", veh_mode_name(s->mode));
         }
         break;
     case VEH_GCS_RESUME:
         if ((s->mode == VEH_MODE_HOLD) && s->armed) {
             veh_set_mode(v, VEH_MODE_AUTO);
             if (mt_mission_resume(&v->mission) == MT_OK) {
-                veh_say(v, "gcs: mission resumed");
+                veh_say("gcs: mission resumed");
             } else {
-                veh_say(v, "gcs: resume refused by the mission");
+                veh_say("gcs: resume refused by the mission");
                 veh_set_mode(v, VEH_MODE_HOLD);
             }
         } else {
-            veh_say(v, "gcs: resume refused (mode %s)", veh_mode_name(s->mode));
+            veh_say("gcs: resume refused (mode %s)", veh_mode_name(s->mode));
         }
         break;
     case VEH_GCS_LAND:
         if (s->armed) {
             (void)mt_mission_stop(&v->mission);
-            veh_say(v, "gcs: land");
+            veh_say("gcs: land");
             veh_set_mode(v, VEH_MODE_LAND);
         }
         break;
@@ -111,28 +114,31 @@ static void put_u32(uint8_t *p, uint32_t v)
 
 void veh_telemetry_send(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    const veh_flight_t *s = &v->fl;
+    veh_estimate_msg_t est;
     uint8_t pkt[32];
     int32_t lat;
     int32_t lon;
     uint32_t i;
     uint8_t sum = 0u;
-    float gs = vm_norm2(s->vel[0], s->vel[1]);
+    float gs;
 
-    vm_ll_from_ne(s->home.lat, s->home.lon, s->pos[0], s->pos[1], &lat, &lon);
+    veh_latest(&v->gcs.est_sub, &est, (uint32_t)sizeof(est));
+    gs = vm_norm2(est.vel[0], est.vel[1]);
+    vm_ll_from_ne(v->home.lat, v->home.lon, est.pos[0], est.pos[1], &lat, &lon);
     pkt[0] = 0x54u; /* 'T' */
     pkt[1] = 27u;   /* payload bytes */
-    pkt[2] = v->telem_seq++;
-    put_u32(&pkt[3], (uint32_t)((veh_now(v) - v->boot_us) / 1000u));
+    pkt[2] = v->gcs.telem_seq++;
+    put_u32(&pkt[3], (uint32_t)((veh_now() - veh_boot_us()) / 1000u));
     pkt[7] = (uint8_t)s->mode;
     pkt[8] = s->armed ? 1u : 0u;
     put_u32(&pkt[9], (uint32_t)lat);
     put_u32(&pkt[13], (uint32_t)lon);
-    put_u32(&pkt[17], (uint32_t)(int32_t)lroundf(-s->pos[2] * 100.0f));
+    put_u32(&pkt[17], (uint32_t)(int32_t)lroundf(-est.pos[2] * 100.0f));
     put_u16(&pkt[21], (uint32_t)lroundf(vm_clamp(gs, 0.0f, 600.0f) * 100.0f));
-    put_u16(&pkt[23], (uint32_t)lroundf(s->att[2] * VM_RAD2DEG * 100.0f));
+    put_u16(&pkt[23], (uint32_t)lroundf(est.att[2] * VM_RAD2DEG * 100.0f));
     put_u16(&pkt[25], v->mission.nav);
-    put_u16(&pkt[27], (uint32_t)lroundf(vm_clamp(s->bat_volt, 0.0f, 60.0f) * 1000.0f));
+    put_u16(&pkt[27], (uint32_t)lroundf(vm_clamp(veh_battery_volts(v), 0.0f, 60.0f) * 1000.0f));
     for (i = 2u; i < 29u; i++) {
         sum = (uint8_t)(sum + pkt[i]);
     }

@@ -2,7 +2,9 @@
 /**
  * @file gps.c
  * @brief gps_update (10 Hz; the receiver gives 5 fixes a second): takes a new
- *        fix and corrects the horizontal position and velocity estimate.
+ *        fix and corrects the horizontal position and velocity estimate: a
+ *        stage of the estimator (takes the newest `estimate`, corrects it,
+ *        publishes it).
  */
 #include "veh_int.h"
 
@@ -13,7 +15,8 @@
 
 void veh_gps_update(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    veh_estimate_msg_t est;
+    veh_estimate_msg_t *s = &est;
     veh_gps_fix_t f;
     float n;
     float e;
@@ -23,11 +26,12 @@ void veh_gps_update(veh_t *v)
     if (!v->plat->gps_read(v->plat->ctx, &f) || (f.fix < 3u)) {
         return;
     }
-    s->gps = f;
+    veh_latest(&v->gps.est, &est, (uint32_t)sizeof(est));
+    v->gps.fix = f;
     s->gps_fixes++;
     s->gps_last_us = f.t_us;
-    vm_ne_from_ll(s->home.lat, s->home.lon, f.lat, f.lon, &n, &e);
-    alt = (float)(f.alt_cm - s->home.alt_cm) * 0.01f;
+    vm_ne_from_ll(v->home.lat, v->home.lon, f.lat, f.lon, &n, &e);
+    alt = (float)(f.alt_cm - v->home.alt_cm) * 0.01f;
     if (!s->pos_ok) {
         s->pos[0] = n;
         s->pos[1] = e;
@@ -43,12 +47,13 @@ void veh_gps_update(veh_t *v)
         s->vel[2] += K_VD * (f.vel[2] - s->vel[2]);
         s->pos[2] += K_ALT * ((-alt) - s->pos[2]);
     }
+    (void)mt_topic_publish(&v->estimate, &est, (uint32_t)sizeof(est));
     {
         uint8_t rec[21];
         uint32_t w[3] = {(uint32_t)f.lat, (uint32_t)f.lon, (uint32_t)f.alt_cm};
         uint32_t k;
         uint32_t j;
-        uint64_t t = veh_now(v); /* records carry the time they are written */
+        uint64_t t = veh_now(); /* records carry the time they are written */
         for (k = 0u; k < 8u; k++) {
             rec[k] = (uint8_t)(t >> (8u * k));
         }

@@ -4,7 +4,9 @@
  * @brief imu_read (fast task): the IMU sample of the tick, the attitude
  *        estimate (gyro integration with a slow accelerometer correction of
  *        roll and pitch) and the inertial prediction of velocity and position
- *        (corrected by gps.c and baro.c).
+ *        (corrected by gps.c and baro.c). The first stage of the estimator: it
+ *        takes the newest estimate (with the corrections since its last run),
+ *        predicts and publishes it on `estimate`.
  */
 #include "veh_int.h"
 
@@ -12,23 +14,27 @@
 
 void veh_imu_read(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    veh_ins_t *ins = &v->ins;
+    veh_estimate_msg_t est;
+    veh_estimate_msg_t *s = &est;
     float d[3];
     float r[3][3];
     float a[3];
     int i;
 
-    v->plat->imu_read(v->plat->ctx, &s->imu);
-    if (s->last_imu_us == 0u) {
+    veh_latest(&ins->est, &est, (uint32_t)sizeof(est));
+    v->plat->imu_read(v->plat->ctx, &ins->imu);
+    if (ins->last_imu_us == 0u) {
         s->dt = 0.0025f;
     } else {
-        s->dt = vm_clamp((float)(s->imu.t_us - s->last_imu_us) * 1.0e-6f, 0.0005f, 0.02f);
+        s->dt = vm_clamp((float)(ins->imu.t_us - ins->last_imu_us) * 1.0e-6f, 0.0005f, 0.02f);
     }
-    s->last_imu_us = s->imu.t_us;
+    ins->last_imu_us = ins->imu.t_us;
+    s->t_us = ins->imu.t_us;
 
     /* attitude: integrate the body rates */
     for (i = 0; i < 3; i++) {
-        s->rates[i] = s->imu.gyro[i];
+        s->rates[i] = ins->imu.gyro[i];
     }
     vm_euler_rates(s->att, s->rates, d);
     for (i = 0; i < 3; i++) {
@@ -36,7 +42,7 @@ void veh_imu_read(veh_t *v)
     }
     /* roll and pitch from gravity when the specific force is close to 1 g */
     {
-        const float *f = s->imu.accel;
+        const float *f = ins->imu.accel;
         float g = vm_norm3(f);
         if ((g > (0.9f * VM_GRAVITY)) && (g < (1.1f * VM_GRAVITY))) {
             float roll_a = atan2f(-f[1], -f[2]);
@@ -53,12 +59,13 @@ void veh_imu_read(veh_t *v)
     /* inertial prediction: earth-frame acceleration = R f + g */
     vm_dcm(s->att, r);
     for (i = 0; i < 3; i++) {
-        a[i] =
-            (r[i][0] * s->imu.accel[0]) + (r[i][1] * s->imu.accel[1]) + (r[i][2] * s->imu.accel[2]);
+        a[i] = (r[i][0] * ins->imu.accel[0]) + (r[i][1] * ins->imu.accel[1]) +
+               (r[i][2] * ins->imu.accel[2]);
     }
     a[2] += VM_GRAVITY;
     for (i = 0; i < 3; i++) {
         s->pos[i] += (s->vel[i] * s->dt) + (0.5f * a[i] * s->dt * s->dt);
         s->vel[i] += a[i] * s->dt;
     }
+    (void)mt_topic_publish(&v->estimate, &est, (uint32_t)sizeof(est));
 }

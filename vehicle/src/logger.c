@@ -4,8 +4,9 @@
  * @brief The binary log: records are written by the main loop into a byte
  *        ring (mt/ring.h) and drained by an IO proc into the platform's log
  *        sink (a file in SITL). log_write (50 Hz) writes the attitude and
- *        controller records, and the position at 10 Hz; other components add
- *        GPS, barometer, battery, mission and event records.
+ *        controller records (from the `estimate` and `att_sp` topics), and the
+ *        position at 10 Hz; other components add GPS, barometer, battery,
+ *        mission and event records.
  *
  * Record: 'M' 'T' type len payload[len] sum, sum = (type + len + payload
  * bytes) mod 256; integers little-endian; every payload starts with the
@@ -84,7 +85,7 @@ static uint16_t cdeg(float rad)
 void veh_log_cmd(veh_t *v, uint16_t index, uint16_t id, uint8_t event)
 {
     uint8_t rec[13];
-    put(rec, veh_now(v), 8u);
+    put(rec, veh_now(), 8u);
     put(rec + 8, index, 2u);
     put(rec + 10, id, 2u);
     rec[12] = event;
@@ -94,38 +95,47 @@ void veh_log_cmd(veh_t *v, uint16_t index, uint16_t id, uint8_t event)
 void veh_log_event(veh_t *v, uint8_t event, uint8_t arg)
 {
     uint8_t rec[10];
-    put(rec, veh_now(v), 8u);
+    put(rec, veh_now(), 8u);
     rec[8] = event;
     rec[9] = arg;
     veh_log_record(v, VEH_LOG_EV, rec, 10u);
 }
 
+uint32_t veh_log_runs(const veh_t *v)
+{
+    return v->lg.runs;
+}
+
 void veh_log_write(veh_t *v)
 {
-    veh_state_t *s = &v->s;
-    uint64_t t = veh_now(v);
+    veh_estimate_msg_t est;
+    veh_att_sp_msg_t sp;
+    const veh_estimate_msg_t *s = &est;
+    uint64_t t = veh_now();
     uint8_t rec[32];
 
-    v->log_runs++;
-    if (!s->armed) {
+    v->lg.runs++;
+    veh_latest(&v->lg.sp_sub, &sp, (uint32_t)sizeof(sp));
+    if (!sp.armed) {
         return; /* log while armed only */
     }
+    veh_latest(&v->lg.est_sub, &est, (uint32_t)sizeof(est));
     put(rec, t, 8u);
     put(rec + 8, cdeg(s->att[0]), 2u);
     put(rec + 10, cdeg(s->att[1]), 2u);
     put(rec + 12, cdeg(s->att[2]), 2u);
-    put(rec + 14, cdeg(s->att_target[0]), 2u);
-    put(rec + 16, cdeg(s->att_target[1]), 2u);
-    put(rec + 18, cdeg(s->att_target[2]), 2u);
+    put(rec + 14, cdeg(sp.att[0]), 2u);
+    put(rec + 16, cdeg(sp.att[1]), 2u);
+    put(rec + 18, cdeg(sp.att[2]), 2u);
     veh_log_record(v, VEH_LOG_ATT, rec, 20u);
 
-    put(rec + 8, (uint64_t)lroundf(vm_clamp(s->thrust, 0.0f, 600.0f) * 100.0f), 2u);
-    put(rec + 10, (uint32_t)(int32_t)lroundf(-s->pc_target[2] * 100.0f), 4u);
+    put(rec + 8, (uint64_t)lroundf(vm_clamp(sp.thrust, 0.0f, 600.0f) * 100.0f), 2u);
+    put(rec + 10, (uint32_t)(int32_t)lroundf(-sp.pos[2] * 100.0f), 4u);
     put(rec + 14, (uint16_t)(int16_t)lroundf(vm_clamp(-s->vel[2] * 100.0f, -32767.0f, 32767.0f)),
         2u);
     veh_log_record(v, VEH_LOG_CTUN, rec, 16u);
 
-    if ((v->log_runs % 5u) == 0u) {
+    if ((v->lg.runs % 5u) == 0u) {
         int i;
         put(rec + 8, (uint32_t)(int32_t)lroundf(s->pos[0] * 100.0f), 4u);
         put(rec + 12, (uint32_t)(int32_t)lroundf(s->pos[1] * 100.0f), 4u);

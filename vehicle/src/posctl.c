@@ -12,6 +12,12 @@
  * The nav command of AUTO mode (auto.c fills s->nav) decides the legs:
  * takeoff, waypoint (reach, then hold), loiter (time, unlimited), circle
  * (loiter turns), land and RTL (climb, return, land).
+ *
+ * Topics: takes the newest `estimate` at each entry point (the estimate does not
+ * change while this file runs) and publishes the attitude and thrust setpoint on
+ * `att_sp` after every change of it: at the end of each nav_update, on arming and on
+ * disarming. The flight state (veh_flight_t) is this file's; auto.c fills the nav
+ * command and the guidance parameters.
  */
 #include "veh_int.h"
 
@@ -56,30 +62,53 @@ float veh_dist3(const float a[3], const float b[3])
     return vm_norm3(d);
 }
 
-void veh_pc_reset(veh_t *v)
+/* The newest estimate into the flight state's copy. */
+static void est_refresh(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    veh_latest(&v->fl.est_sub, &v->fl.est, (uint32_t)sizeof(v->fl.est));
+}
+
+/* The setpoint (targets, thrust, arming) on `att_sp`. */
+static void sp_publish(veh_t *v)
+{
+    const veh_flight_t *s = &v->fl;
+    veh_att_sp_msg_t sp;
     int i;
 
     for (i = 0; i < 3; i++) {
-        s->pc_target[i] = s->pos[i];
+        sp.att[i] = s->att_target[i];
+        sp.pos[i] = s->pc_target[i];
+    }
+    sp.thrust = s->thrust;
+    sp.armed = s->armed;
+    sp.flying = s->flying;
+    (void)mt_topic_publish(&v->att_sp, &sp, (uint32_t)sizeof(sp));
+}
+
+static void pc_reset(veh_t *v)
+{
+    veh_flight_t *s = &v->fl;
+    int i;
+
+    for (i = 0; i < 3; i++) {
+        s->pc_target[i] = s->est.pos[i];
         s->pc_vel_ff[i] = 0.0f;
         s->pc_vel_i[i] = 0.0f;
-        s->leg_origin[i] = s->pos[i];
-        s->leg_dest[i] = s->pos[i];
+        s->leg_origin[i] = s->est.pos[i];
+        s->leg_dest[i] = s->est.pos[i];
     }
     s->pc_alt_i = 0.0f;
     s->leg_len = 0.0f;
     s->leg_s = 0.0f;
     s->leg_v = 0.0f;
     s->leg_done = true;
-    s->yaw_cmd = s->att[2];
-    s->yaw_goal = s->att[2];
+    s->yaw_cmd = s->est.att[2];
+    s->yaw_goal = s->est.att[2];
 }
 
-void veh_leg_start_from(veh_t *v, const float origin[3], const float dest[3])
+static void leg_start_from(veh_t *v, const float origin[3], const float dest[3])
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
     int i;
 
     for (i = 0; i < 3; i++) {
@@ -99,14 +128,14 @@ void veh_leg_start(veh_t *v, const float dest[3])
 
     /* from where the target is now, so the target never jumps */
     for (i = 0; i < 3; i++) {
-        origin[i] = v->s.pc_target[i];
+        origin[i] = v->fl.pc_target[i];
     }
-    veh_leg_start_from(v, origin, dest);
+    leg_start_from(v, origin, dest);
 }
 
 static void leg_update(veh_t *v, float dt)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
     float u[3];
     float hx;
     float hz;
@@ -139,7 +168,7 @@ static void leg_update(veh_t *v, float dt)
     if (vstop < vlim) {
         vlim = vstop;
     }
-    if (veh_dist3(s->pc_target, s->pos) > LEASH) {
+    if (veh_dist3(s->pc_target, s->est.pos) > LEASH) {
         /* the vehicle is far behind: let it catch up */
         s->leg_v = fmaxf(0.0f, s->leg_v - (2.0f * LEG_ACCEL * dt));
     } else {
@@ -159,7 +188,7 @@ static void leg_update(veh_t *v, float dt)
 
 static void yaw_update(veh_t *v, float dt)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
     float err = vm_wrap_pi(s->yaw_goal - s->yaw_cmd);
     float step = s->yaw_rate * dt;
 
@@ -169,9 +198,9 @@ static void yaw_update(veh_t *v, float dt)
 /* Face the leg's destination while it is more than a few metres away. */
 static void yaw_face_leg(veh_t *v)
 {
-    veh_state_t *s = &v->s;
-    float dn = s->leg_dest[0] - s->pos[0];
-    float de = s->leg_dest[1] - s->pos[1];
+    veh_flight_t *s = &v->fl;
+    float dn = s->leg_dest[0] - s->est.pos[0];
+    float de = s->leg_dest[1] - s->est.pos[1];
 
     if (!s->yaw_fixed && !s->leg_done && (vm_norm2(dn, de) > 3.0f)) {
         s->yaw_goal = vm_wrap_2pi(atan2f(de, dn));
@@ -180,18 +209,18 @@ static void yaw_face_leg(veh_t *v)
 
 static void pos_control(veh_t *v, float dt, float descent_max)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
     float vcmd[2];
     float acc[2];
     float n;
-    float c = cosf(s->att[2]);
-    float sn = sinf(s->att[2]);
+    float c = cosf(s->est.att[2]);
+    float sn = sinf(s->est.att[2]);
     float a_fwd;
     float a_right;
     float roll;
     float pitch;
-    float alt = -s->pos[2];
-    float climb = -s->vel[2];
+    float alt = -s->est.pos[2];
+    float climb = -s->est.vel[2];
     float climb_cmd;
     float e;
     float a_up;
@@ -199,7 +228,7 @@ static void pos_control(veh_t *v, float dt, float descent_max)
     int i;
 
     for (i = 0; i < 2; i++) {
-        vcmd[i] = s->pc_vel_ff[i] + (POS_P * (s->pc_target[i] - s->pos[i]));
+        vcmd[i] = s->pc_vel_ff[i] + (POS_P * (s->pc_target[i] - s->est.pos[i]));
     }
     n = vm_norm2(vcmd[0], vcmd[1]);
     if (n > (s->speed_xy + 2.0f)) {
@@ -207,7 +236,7 @@ static void pos_control(veh_t *v, float dt, float descent_max)
         vcmd[1] *= (s->speed_xy + 2.0f) / n;
     }
     for (i = 0; i < 2; i++) {
-        float err = vcmd[i] - s->vel[i];
+        float err = vcmd[i] - s->est.vel[i];
         s->pc_vel_i[i] = vm_clamp(s->pc_vel_i[i] + (VEL_I * err * dt), -2.0f, 2.0f);
         acc[i] = (VEL_P * err) + s->pc_vel_i[i];
     }
@@ -238,8 +267,8 @@ static void pos_control(veh_t *v, float dt, float descent_max)
  * landed (the vehicle is then disarmed). */
 static bool land_run(veh_t *v, const float xy[3], float dt)
 {
-    veh_state_t *s = &v->s;
-    float alt = -s->pos[2];
+    veh_flight_t *s = &v->fl;
+    float alt = -s->est.pos[2];
     float speed = (alt > LAND_SLOW_ALT) ? LAND_SPEED_HIGH : LAND_SPEED;
     float weight = VEH_MASS * VM_GRAVITY;
 
@@ -248,17 +277,17 @@ static bool land_run(veh_t *v, const float xy[3], float dt)
     s->pc_vel_ff[0] = 0.0f;
     s->pc_vel_ff[1] = 0.0f;
     /* keep the target just below the vehicle: the climb command is the land speed */
-    s->pc_target[2] = s->pos[2] + (speed / ALT_P);
+    s->pc_target[2] = s->est.pos[2] + (speed / ALT_P);
     s->pc_vel_ff[2] = 0.0f;
     pos_control(v, dt, speed);
-    if ((alt < 2.0f) && (fabsf(s->vel[2]) < 0.3f) && (s->thrust < (0.7f * weight))) {
+    if ((alt < 2.0f) && (fabsf(s->est.vel[2]) < 0.3f) && (s->thrust < (0.7f * weight))) {
         s->landed_ticks++;
     } else {
         s->landed_ticks = 0u;
     }
     if (s->landed_ticks >= LAND_DETECT_RUNS) {
-        veh_say(v, "vehicle: landed at %s m from home",
-                vp_float((char[16]){0}, 16u, vm_norm2(s->pos[0], s->pos[1]), 1u));
+        veh_say("vehicle: landed at %s m from home",
+                vp_float((char[16]){0}, 16u, vm_norm2(s->est.pos[0], s->est.pos[1]), 1u));
         veh_disarm(v, "landed");
         return true;
     }
@@ -267,33 +296,33 @@ static bool land_run(veh_t *v, const float xy[3], float dt)
 
 static void nav_reached(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
     if (!s->nav.reached) {
         s->nav.reached = true;
-        s->nav.reached_us = veh_now(v);
+        s->nav.reached_us = veh_now();
     }
 }
 
 static bool held(const veh_t *v)
 {
-    const veh_navcmd_t *n = &v->s.nav;
+    const veh_navcmd_t *n = &v->fl.nav;
     if (!n->reached || (n->hold_s < 0.0f)) {
         return false;
     }
-    return (float)(veh_now(v) - n->reached_us) >= (n->hold_s * 1.0e6f);
+    return (float)(veh_now() - n->reached_us) >= (n->hold_s * 1.0e6f);
 }
 
 static void auto_circle(veh_t *v, float dt)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
     veh_navcmd_t *n = &s->nav;
 
     if (n->phase == 0u) {
         leg_update(v, dt);
         yaw_face_leg(v);
-        if (s->leg_done && (veh_dist3(s->pos, s->leg_dest) < n->radius)) {
+        if (s->leg_done && (veh_dist3(s->est.pos, s->leg_dest) < n->radius)) {
             n->phase = 1u;
-            n->angle = atan2f(s->pos[1] - n->dest[1], s->pos[0] - n->dest[0]);
+            n->angle = atan2f(s->est.pos[1] - n->dest[1], s->est.pos[0] - n->dest[0]);
             n->swept = 0.0f;
             nav_reached(v);
         }
@@ -324,13 +353,13 @@ static void auto_circle(veh_t *v, float dt)
 
 static void auto_rtl(veh_t *v, float dt)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
     veh_navcmd_t *n = &s->nav;
 
     if (n->phase == 0u) {
         /* climb to the return altitude here */
         leg_update(v, dt);
-        if (s->leg_done && (fabsf(s->pos[2] - s->leg_dest[2]) < 1.0f)) {
+        if (s->leg_done && (fabsf(s->est.pos[2] - s->leg_dest[2]) < 1.0f)) {
             float home[3] = {0.0f, 0.0f, -s->rtl_alt};
             n->phase = 1u;
             veh_leg_start(v, home);
@@ -338,10 +367,10 @@ static void auto_rtl(veh_t *v, float dt)
     } else if (n->phase == 1u) {
         leg_update(v, dt);
         yaw_face_leg(v);
-        if (s->leg_done && (veh_dist_xy(s->pos, s->leg_dest) < 2.0f)) {
+        if (s->leg_done && (veh_dist_xy(s->est.pos, s->leg_dest) < 2.0f)) {
             n->phase = 2u;
             nav_reached(v);
-            veh_say(v, "mission: RTL home reached, landing");
+            veh_say("mission: RTL home reached, landing");
         }
     } else {
         float home[3] = {0.0f, 0.0f, 0.0f};
@@ -355,13 +384,13 @@ static void auto_rtl(veh_t *v, float dt)
 
 static void auto_run(veh_t *v, float dt)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
     veh_navcmd_t *n = &s->nav;
 
     switch (n->kind) {
     case VEH_NAV_TAKEOFF:
         leg_update(v, dt);
-        if (s->leg_done && (fabsf(s->pos[2] - n->dest[2]) < 0.5f)) {
+        if (s->leg_done && (fabsf(s->est.pos[2] - n->dest[2]) < 0.5f)) {
             nav_reached(v);
             n->done = true;
         }
@@ -370,7 +399,7 @@ static void auto_run(veh_t *v, float dt)
     case VEH_NAV_LOITER:
         leg_update(v, dt);
         yaw_face_leg(v);
-        if (s->leg_done && (veh_dist3(s->pos, n->dest) < n->radius)) {
+        if (s->leg_done && (veh_dist3(s->est.pos, n->dest) < n->radius)) {
             nav_reached(v);
         }
         if (held(v)) {
@@ -382,7 +411,7 @@ static void auto_run(veh_t *v, float dt)
         if (n->phase == 0u) {
             leg_update(v, dt);
             yaw_face_leg(v);
-            if (s->leg_done && (veh_dist_xy(s->pos, s->leg_dest) < 1.5f)) {
+            if (s->leg_done && (veh_dist_xy(s->est.pos, s->leg_dest) < 1.5f)) {
                 n->phase = 1u;
                 nav_reached(v);
             }
@@ -402,23 +431,24 @@ static void auto_run(veh_t *v, float dt)
 
 void veh_set_mode(veh_t *v, veh_mode_t m)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
     int i;
 
     if (m == s->mode) {
         return;
     }
-    veh_say(v, "vehicle: mode %s -> %s", veh_mode_name(s->mode), veh_mode_name(m));
+    est_refresh(v);
+    veh_say("vehicle: mode %s -> %s", veh_mode_name(s->mode), veh_mode_name(m));
     s->mode = m;
     veh_log_event(v, 3u, (uint8_t)m);
     if (m == VEH_MODE_HOLD) {
         for (i = 0; i < 3; i++) {
-            s->hold_pos[i] = s->pos[i];
+            s->hold_pos[i] = s->est.pos[i];
         }
         veh_leg_start(v, s->hold_pos);
     } else if (m == VEH_MODE_LAND) {
         for (i = 0; i < 3; i++) {
-            s->land_pos[i] = s->pos[i];
+            s->land_pos[i] = s->est.pos[i];
         }
         s->landed_ticks = 0u;
     } else {
@@ -428,7 +458,7 @@ void veh_set_mode(veh_t *v, veh_mode_t m)
 
 bool veh_arm(veh_t *v)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
 
     if (s->armed) {
         return true;
@@ -437,19 +467,21 @@ bool veh_arm(veh_t *v)
     s->flying = false;
     s->landed_ticks = 0u;
     s->yaw_fixed = false;
-    veh_pc_reset(v);
+    est_refresh(v);
+    pc_reset(v);
+    sp_publish(v);
     if (v->c.armed_us == 0u) {
-        v->c.armed_us = veh_now(v);
+        v->c.armed_us = veh_now();
     }
     v->c.disarmed_us = 0u;
     veh_log_event(v, 1u, 0u);
-    veh_say(v, "vehicle: armed");
+    veh_say("vehicle: armed");
     return true;
 }
 
 void veh_disarm(veh_t *v, const char *why)
 {
-    veh_state_t *s = &v->s;
+    veh_flight_t *s = &v->fl;
 
     if (!s->armed) {
         return;
@@ -457,25 +489,26 @@ void veh_disarm(veh_t *v, const char *why)
     s->armed = false;
     s->flying = false;
     s->thrust = 0.0f;
-    v->c.disarmed_us = veh_now(v);
+    sp_publish(v);
+    v->c.disarmed_us = veh_now();
     veh_log_event(v, 2u, 0u);
-    veh_say(v, "vehicle: disarmed (%s)", why);
+    veh_say("vehicle: disarmed (%s)", why);
     if (s->mode != VEH_MODE_AUTO) {
         veh_set_mode(v, VEH_MODE_STANDBY);
     }
 }
 
-void veh_nav_update(veh_t *v)
+static void nav_run(veh_t *v)
 {
-    veh_state_t *s = &v->s;
-    uint64_t now = veh_now(v);
+    veh_flight_t *s = &v->fl;
+    uint64_t now = veh_now();
     float dt = (s->last_nav_us == 0u)
                    ? 0.02f
                    : vm_clamp((float)(now - s->last_nav_us) * 1.0e-6f, 0.005f, 0.1f);
 
     s->last_nav_us = now;
     if (!s->armed) {
-        veh_pc_reset(v);
+        pc_reset(v);
         s->thrust = 0.0f;
         return;
     }
@@ -494,6 +527,13 @@ void veh_nav_update(veh_t *v)
     if (s->armed && !s->flying && (s->thrust > (0.3f * VEH_MASS * VM_GRAVITY)) &&
         ((-s->pc_target[2]) > 0.3f)) {
         s->flying = true;
-        veh_say(v, "vehicle: taking off");
+        veh_say("vehicle: taking off");
     }
+}
+
+void veh_nav_update(veh_t *v)
+{
+    est_refresh(v);
+    nav_run(v);
+    sp_publish(v);
 }

@@ -5,8 +5,9 @@
  *
  * The vehicle is a set of components (vehicle/src/) wired together by the
  * topology in vehicle.c: the task table (vehicle/tasks.def), one timer proc
- * (the barometer driver), one IO proc (the log writer), the mission sequencer
- * and its callbacks. It knows nothing of threads or ports: a deployment
+ * (the barometer driver), one IO proc (the log writer), the topics the
+ * components exchange their data on (mt/bus.h), the mission sequencer and its
+ * callbacks. It knows nothing of threads or ports: a deployment
  * provides a veh_platform_t (sensors, actuators, sinks), runs the main loop
  * (veh_loop_once) on its sample wait, and dispatches the two proc sets from
  * whatever threads its port offers. Operating rules:
@@ -149,7 +150,7 @@ const char *veh_incomplete_reason(void);
 /** Print the flight summary on the console (stop_reason: why the run ended). */
 void veh_summary(const char *stop_reason);
 
-/** Console output with the vehicle's formatter (main-loop thread). */
+/** Console output with the vehicle's formatter (main-loop thread; console.c). */
 void veh_printf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /** Counters the summary and the tests use. */

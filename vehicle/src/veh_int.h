@@ -17,7 +17,15 @@
  *               shared bus and publishes the readings on the `battery` topic
  *   house.c     housekeeping (battery readings from the topic, health), status_line
  *   sensor_bus.c the shared sensor bus (binary semaphore)
- * vehicle.c is the topology: it owns the state below and the task table.
+ *   console.c   time and console text (console.h); calls no other component
+ * Data between components goes through topics (mt/bus.h, declared below): the state
+ * estimate (`estimate`), the attitude and thrust setpoint (`att_sp`), the actuator
+ * demand (`actuator`) and the battery readings (`battery`). Each component keeps its own
+ * state in its member of veh_t; the flight state (modes, arming, the nav command) is
+ * posctl's, shared with auto.c through calls and the nav command.
+ * vehicle.c is the topology: it owns veh_t, creates the topics and subscriptions and
+ * expands the task table. Calls between the files form no cycle (the console and the
+ * logger at the bottom, the topology at the top; tests/vehicle/check_callgraph.py).
  */
 #ifndef VEH_INT_H
 #define VEH_INT_H
@@ -26,6 +34,7 @@
 #include <stdint.h>
 
 #include "baro_link.h"
+#include "console.h"
 #include "mt/mt.h"
 #include "veh.h"
 #include "vmath.h"
@@ -56,7 +65,102 @@ typedef struct {
 bool veh_bus_read(veh_bus_t *b, const veh_platform_t *p, uint8_t dev, uint8_t reg, uint8_t *rx,
                   uint32_t n, uint64_t timeout_us);
 
-/* ---- flight state --------------------------------------------------------------------- */
+/* ---- topics (mt/bus.h): the data the components exchange ------------------------------ */
+
+/** `estimate` (queue of 1): the state estimate. Published by each stage of the estimator
+ *  in the main loop: the inertial prediction (ins.c, every tick), the GPS correction
+ *  (gps.c) and the barometer correction (baro.c); each stage takes the newest estimate,
+ *  corrects it and publishes it whole. Read by attctl, posctl, auto, gcs, house, logger. */
+typedef struct {
+    uint64_t t_us;        /**< time of the IMU sample of the newest prediction */
+    float dt;             /**< seconds since the previous sample */
+    float att[3];         /**< roll, pitch, yaw, rad */
+    float rates[3];       /**< body rates, rad/s */
+    float pos[3];         /**< NED from home, m */
+    float vel[3];         /**< NED, m/s */
+    bool pos_ok;          /**< GPS has corrected the estimate */
+    bool baro_ok;         /**< the barometer is calibrated (it corrects the altitude) */
+    uint32_t gps_fixes;   /**< fixes taken */
+    uint64_t gps_last_us; /**< time of the newest fix */
+} veh_estimate_msg_t;
+
+/** `att_sp` (queue of 1): the attitude and thrust setpoint, published by posctl.c
+ *  whenever it changes them (each nav_update, arming, disarming). Read by attctl and
+ *  the logger. */
+typedef struct {
+    float att[3]; /**< roll, pitch, yaw targets, rad */
+    float thrust; /**< total thrust, N */
+    float pos[3]; /**< the position target behind it (NED, m; logged) */
+    bool armed;
+    bool flying; /**< took off since arming: the controllers act */
+} veh_att_sp_msg_t;
+
+/** `actuator` (queue of 1): thrust and body torques, published by attctl.c every tick
+ *  (the setpoint's thrust and arming state passed on). Read by motors.c. */
+typedef struct {
+    float thrust;    /**< total, N */
+    float torque[3]; /**< N m */
+    bool armed;
+    bool flying;
+} veh_actuator_msg_t;
+
+/** `battery`: battery readings (battery.c -> house.c). */
+/* 3 Hz, as the housekeeping loop */
+#define VEH_BATTERY_PERIOD_US 333333u
+/* two readings retained: a late housekeeping run still gets both; more are counted as missed */
+#define VEH_BATTERY_QUEUE 2u
+typedef struct {
+    uint64_t t_us; /**< time of the read */
+    uint32_t mv;   /**< millivolts */
+    uint32_t ca;   /**< centiamperes */
+} veh_battery_msg_t;
+
+/** The newest message of a topic. Every topic of the main loop gets a first message at
+ *  set-up (veh_init), so there always is one; the subscriber belongs to the caller. */
+static inline void veh_latest(mt_sub_t *sub, void *out, uint32_t size)
+{
+    (void)mt_sub_copy_latest(sub, out, size, 0u);
+}
+
+/* ---- components' own state (each written by its component only) ----------------------- */
+
+/** ins.c */
+typedef struct {
+    mt_sub_t est; /**< its own previous estimate (and the corrections since) */
+    veh_imu_sample_t imu;
+    uint64_t last_imu_us;
+} veh_ins_t;
+
+/** gps.c */
+typedef struct {
+    mt_sub_t est;
+    veh_gps_fix_t fix; /**< newest fix */
+} veh_gps_t;
+
+/** baro.c (the main-loop side; the driver's state is the link and bus_fail) */
+typedef struct {
+    mt_sub_t est;
+    float alt;      /**< altitude from the barometer, m above the boot pressure */
+    float p0;       /**< ground pressure, Pa */
+    uint32_t cal_n; /**< samples in the ground calibration */
+    float cal_sum;
+    bool ok; /**< calibrated */
+} veh_baro_t;
+
+/** attctl.c */
+typedef struct {
+    mt_sub_t est;
+    mt_sub_t sp;
+    float rate_target[3];
+    float rate_i[3];
+    float rate_prev_err[3];
+} veh_attctl_t;
+
+/** motors.c */
+typedef struct {
+    mt_sub_t act;
+    float motor[4]; /**< outputs 0..1 */
+} veh_motors_t;
 
 typedef enum {
     VEH_MODE_STANDBY = 0, /**< disarmed on the ground */
@@ -94,42 +198,16 @@ typedef struct {
     bool done;
 } veh_navcmd_t;
 
-/** The active do/condition command. */
+/** The flight state: modes, arming, the active nav command and the position
+ *  controller. posctl.c owns it; auto.c (AUTO mode) fills the nav command and the
+ *  guidance parameters (speed, yaw, RTL altitude) when a mission command starts;
+ *  gcs.c, house.c and the topology read the mode and the arming state. */
 typedef struct {
-    uint16_t index;
-    uint16_t id;
-    uint64_t start_us;
-    float value; /**< delay s, distance m, target yaw rad */
-    bool active;
-} veh_docmd_t;
-
-typedef struct {
-    /* attitude estimate (ins.c) */
-    veh_imu_sample_t imu;
-    uint64_t last_imu_us;
-    float dt;     /**< seconds since the previous sample */
-    float att[3]; /**< roll, pitch, yaw */
-    float rates[3];
-    /* inertial navigation (ins.c, corrected by gps.c and baro.c) */
-    float pos[3]; /**< NED from home, m */
-    float vel[3];
-    bool pos_ok; /**< GPS has corrected the estimate */
-    uint32_t gps_fixes;
-    uint64_t gps_last_us;
-    veh_gps_fix_t gps;
-    float baro_alt;      /**< altitude from the barometer, m above the boot pressure */
-    float baro_p0;       /**< ground pressure, Pa */
-    uint32_t baro_cal_n; /**< samples in the ground calibration */
-    float baro_cal_sum;
-    bool baro_ok;
-    /* control targets (posctl.c -> attctl.c -> motors.c) */
+    mt_sub_t est_sub;       /**< posctl's subscription to `estimate` */
+    veh_estimate_msg_t est; /**< newest estimate, taken at each entry point */
+    /* the setpoint being built (published on `att_sp`) */
     float att_target[3]; /**< roll, pitch, yaw */
-    float rate_target[3];
-    float rate_i[3];
-    float rate_prev_err[3];
-    float thrust;    /**< N, total */
-    float torque[3]; /**< N m */
-    float motor[4];  /**< outputs 0..1 */
+    float thrust;        /**< N, total */
     /* position controller */
     float pc_target[3]; /**< NED position target */
     float pc_vel_ff[3];
@@ -154,17 +232,39 @@ typedef struct {
     bool flying;           /**< took off since arming */
     uint32_t landed_ticks; /**< nav runs with the landing detector true */
     veh_navcmd_t nav;
-    veh_docmd_t doc;
     float hold_pos[3];
     float land_pos[3];
     float rtl_alt;
-    veh_phase_t phase;
-    bool crashed;
+} veh_flight_t;
+
+/** The active do/condition command. */
+typedef struct {
+    uint16_t index;
+    uint16_t id;
+    uint64_t start_us;
+    float value; /**< delay s, distance m, target yaw rad */
+    bool active;
+} veh_docmd_t;
+
+/** auto.c */
+typedef struct {
+    mt_sub_t est_sub;
+    veh_estimate_msg_t est; /**< newest estimate, taken at each callback */
+    veh_docmd_t doc;
+} veh_auto_t;
+
+/** gcs.c */
+typedef struct {
+    mt_sub_t est_sub;
+    uint8_t telem_seq;
     bool arm_refused_said;
     char refuse_reason[64];
-    /* home */
-    veh_home_t home;
-    /* battery (house.c) */
+} veh_gcs_t;
+
+/** house.c (the battery state from the `battery` topic and the health warnings) */
+typedef struct {
+    mt_sub_t est_sub;
+    mt_sub_t battery_sub; /**< every battery reading (mt_sub_copy_next) */
     float bat_volt;
     float bat_amp;
     bool bat_ok;
@@ -172,29 +272,43 @@ typedef struct {
     bool bat_stale_said;
     uint64_t bat_last_us; /**< time of the newest reading taken */
     uint32_t status_runs;
-} veh_state_t;
+} veh_house_t;
 
-/** Battery readings on the `battery` topic (battery.c -> house.c). */
-/* 3 Hz, as the housekeeping loop */
-#define VEH_BATTERY_PERIOD_US 333333u
-/* two readings retained: a late housekeeping run still gets both; more are counted as missed */
-#define VEH_BATTERY_QUEUE 2u
+/** logger.c (main-loop side) */
 typedef struct {
-    uint64_t t_us; /**< time of the read */
-    uint32_t mv;   /**< millivolts */
-    uint32_t ca;   /**< centiamperes */
-} veh_battery_msg_t;
+    mt_sub_t est_sub;
+    mt_sub_t sp_sub;
+    uint32_t runs; /**< log_write runs */
+} veh_logger_t;
 
 typedef struct {
     const veh_platform_t *plat;
-    veh_state_t s;
+    veh_home_t home; /**< constant after veh_init */
+    /* topics */
+    mt_topic_t estimate;
+    veh_estimate_msg_t estimate_store[1];
+    mt_topic_t att_sp;
+    veh_att_sp_msg_t att_sp_store[1];
+    mt_topic_t actuator;
+    veh_actuator_msg_t actuator_store[1];
+    /* components */
+    veh_ins_t ins;
+    veh_gps_t gps;
+    veh_baro_t baro;
+    veh_attctl_t att;
+    veh_motors_t mot;
+    veh_flight_t fl;
+    veh_auto_t au;
+    veh_gcs_t gcs;
+    veh_house_t house;
+    veh_logger_t lg;
+    bool crashed; /**< the deployment reported a crash (veh_note_crash) */
+    /* threads' hand-offs */
     veh_bus_t bus;
-    veh_baro_link_t baro;
+    veh_baro_link_t baro_link;
     uint32_t baro_bus_fail; /**< timer proc: bus not obtained (timer thread only) */
     mt_bring_t log;
     uint8_t log_store[8192];
-    uint32_t log_runs;
-    uint8_t telem_seq;
     mt_mission_t mission;
     bool mission_ok;        /**< a mission is loaded */
     mt_status_t mission_st; /**< status of the load */
@@ -207,10 +321,8 @@ typedef struct {
     mt_work_t battery_work;
     mt_topic_t battery_topic;
     veh_battery_msg_t battery_store[VEH_BATTERY_QUEUE];
-    mt_sub_t battery_sub;       /**< housekeeping's subscription (main loop) */
     uint32_t battery_read_fail; /**< work item: bus reads that failed (queue thread) */
     veh_counters_t c;
-    uint64_t boot_us;
 } veh_t;
 
 /* ---- component entry points ------------------------------------------------------------ */
@@ -233,8 +345,12 @@ void veh_status_line(veh_t *v);
 void veh_baro_timer_proc(void *arg); /**< timer thread, 1 kHz */
 void veh_log_io_proc(void *arg);     /**< IO thread */
 
-/* battery monitor (battery.c): topic, subscription, work queue and interval item */
+/* battery monitor (battery.c): topic, work queue and interval item */
 mt_status_t veh_battery_init(veh_t *v);
+
+/* battery state (house.c) */
+bool veh_battery_ok(const veh_t *v);
+float veh_battery_volts(const veh_t *v);
 
 /* AUTO mode (auto.c) */
 void veh_auto_init(veh_t *v);
@@ -242,18 +358,13 @@ bool veh_auto_start(veh_t *v);
 const char *veh_cmd_name(uint16_t id);
 
 /* position control and modes (posctl.c) */
-void veh_pc_reset(veh_t *v);
 void veh_set_mode(veh_t *v, veh_mode_t m);
 void veh_leg_start(veh_t *v, const float dest[3]);
-void veh_leg_start_from(veh_t *v, const float origin[3], const float dest[3]);
 float veh_dist_xy(const float a[3], const float b[3]);
 float veh_dist3(const float a[3], const float b[3]);
 void veh_disarm(veh_t *v, const char *why);
 bool veh_arm(veh_t *v);
 const char *veh_mode_name(veh_mode_t m);
-
-/* location of a mission command in the NED frame (z: relative altitude down) */
-void veh_cmd_location(const veh_t *v, const mt_mission_cmd_t *c, float out[3], bool *has_xy);
 
 /* log records (logger.c), main-loop thread only */
 #define VEH_LOG_ATT 1u
@@ -268,9 +379,6 @@ void veh_log_init(veh_t *v);
 void veh_log_record(veh_t *v, uint8_t type, const uint8_t *payload, uint8_t len);
 void veh_log_cmd(veh_t *v, uint16_t index, uint16_t id, uint8_t event);
 void veh_log_event(veh_t *v, uint8_t event, uint8_t arg);
-
-/* console */
-uint64_t veh_now(const veh_t *v);
-void veh_say(veh_t *v, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+uint32_t veh_log_runs(const veh_t *v); /**< log_write runs so far (decimation of records) */
 
 #endif /* VEH_INT_H */

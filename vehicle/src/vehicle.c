@@ -2,10 +2,10 @@
 /**
  * @file vehicle.c
  * @brief The vehicle's topology: the task table (expanded from tasks.def),
- *        the procs, the components' state and the mission, and the summary.
- *        Knows nothing of threads or ports (see veh.h).
+ *        the procs, the topics and who subscribes to them, the components'
+ *        state and the mission, and the summary. Knows nothing of threads or
+ *        ports (see veh.h). It calls the components; no component calls it.
  */
-#include <stdarg.h>
 #include <string.h>
 
 #include "veh_int.h"
@@ -130,94 +130,6 @@ static void task_work(uint32_t i)
     }
 }
 
-/* ---- console ------------------------------------------------------------------------------ */
-
-uint64_t veh_now(const veh_t *v)
-{
-    (void)v;
-    return mt_port_now_us();
-}
-
-/* Console output is formatted into a line buffer and handed to the platform in one piece
- * (a console call per fragment costs a ring operation each on the firmware). */
-typedef struct {
-    const veh_platform_t *p;
-    size_t n;
-    char buf[192];
-} veh_line_t;
-
-static void line_flush(veh_line_t *l)
-{
-    if (l->n > 0u) {
-        l->p->console(l->p->ctx, l->buf, l->n);
-        l->n = 0u;
-    }
-}
-
-static void line_sink(void *ctx, const char *s, size_t n)
-{
-    veh_line_t *l = (veh_line_t *)ctx;
-    size_t i;
-
-    for (i = 0u; i < n; i++) {
-        if (l->n == sizeof(l->buf)) {
-            line_flush(l);
-        }
-        l->buf[l->n] = s[i];
-        l->n++;
-    }
-}
-
-void veh_printf(const char *fmt, ...)
-{
-    veh_line_t l;
-    va_list ap;
-
-    l.p = g_veh.plat;
-    l.n = 0u;
-    va_start(ap, fmt);
-    (void)vp_vformat(line_sink, &l, fmt, ap);
-    va_end(ap);
-    line_flush(&l);
-}
-
-void veh_say(veh_t *v, const char *fmt, ...)
-{
-    veh_line_t l;
-    char t[24];
-    uint64_t now = veh_now(v);
-    va_list ap;
-
-    l.p = v->plat;
-    l.n = 0u;
-    (void)vp_fix(t, sizeof(t), (int64_t)((now >= v->boot_us) ? (now - v->boot_us) : 0u), 1000000,
-                 3u);
-    line_sink(&l, "[", 1u);
-    {
-        size_t k = 0u;
-        while (t[k] != '\0') {
-            k++;
-        }
-        while (k < 8u) {
-            line_sink(&l, " ", 1u);
-            k++;
-        }
-    }
-    {
-        size_t k = 0u;
-        while (t[k] != '\0') {
-            k++;
-        }
-        line_sink(&l, t, k);
-    }
-    line_sink(&l, "] ", 2u);
-    va_start(ap, fmt);
-    (void)vp_vformat(line_sink, &l, fmt, ap);
-    va_end(ap);
-    line_sink(&l, "\n", 1u);
-    line_flush(&l);
-}
-
 /* ---- set-up and loop ----------------------------------------------------------------------- */
 
 /* The work queue and the battery topic (the summary's last lines). */
@@ -245,8 +157,64 @@ static void veh_summary_battery(veh_t *v)
     veh_printf("topic battery: %u published, %u refused; housekeeping: %u received, %u missed, "
                "%u torn\n",
                (unsigned)v->battery_topic.publishes, (unsigned)v->battery_topic.rejected,
-               (unsigned)v->battery_sub.received, (unsigned)v->battery_sub.missed,
-               (unsigned)v->battery_sub.torn);
+               (unsigned)v->house.battery_sub.received, (unsigned)v->house.battery_sub.missed,
+               (unsigned)v->house.battery_sub.torn);
+}
+
+/* ---- topics: the data flow between the components --------------------------------------- */
+
+static const mt_topic_desc_t g_estimate_desc =
+    MT_TOPIC_DESC("estimate", veh_estimate_msg_t, 1u, 0u);
+static const mt_topic_desc_t g_att_sp_desc = MT_TOPIC_DESC("att_sp", veh_att_sp_msg_t, 1u, 0u);
+static const mt_topic_desc_t g_actuator_desc =
+    MT_TOPIC_DESC("actuator", veh_actuator_msg_t, 1u, 0u);
+
+/* One topic with a first, all-zero message (the state before the first sample), so a
+ * subscriber's newest message always exists (veh_latest). */
+static mt_status_t topic_start(mt_topic_t *t, const mt_topic_desc_t *d, void *store, uint32_t bytes)
+{
+    static const uint8_t zero[MT_CFG_BUS_MAX_MSG];
+    mt_status_t st = mt_topic_init(t, d, store, bytes);
+
+    if (st == MT_OK) {
+        st = mt_topic_publish(t, zero, d->msg_size);
+    }
+    return st;
+}
+
+/* Publishers:  estimate  ins.c, gps.c, baro.c (the estimator's stages, main loop)
+ *              att_sp    posctl.c
+ *              actuator  attctl.c
+ *              battery   battery.c (work queue; created by veh_battery_init)
+ * Subscribers, all in the main loop, one subscription each: */
+static mt_status_t topics_init(veh_t *v)
+{
+    mt_status_t st = topic_start(&v->estimate, &g_estimate_desc, v->estimate_store,
+                                 (uint32_t)sizeof(v->estimate_store));
+    if (st == MT_OK) {
+        st = topic_start(&v->att_sp, &g_att_sp_desc, v->att_sp_store,
+                         (uint32_t)sizeof(v->att_sp_store));
+    }
+    if (st == MT_OK) {
+        st = topic_start(&v->actuator, &g_actuator_desc, v->actuator_store,
+                         (uint32_t)sizeof(v->actuator_store));
+    }
+    if (st != MT_OK) {
+        return st;
+    }
+    mt_sub_init(&v->ins.est, &v->estimate, 0u);
+    mt_sub_init(&v->gps.est, &v->estimate, 0u);
+    mt_sub_init(&v->baro.est, &v->estimate, 0u);
+    mt_sub_init(&v->att.est, &v->estimate, 0u);
+    mt_sub_init(&v->att.sp, &v->att_sp, 0u);
+    mt_sub_init(&v->mot.act, &v->actuator, 0u);
+    mt_sub_init(&v->fl.est_sub, &v->estimate, 0u);
+    mt_sub_init(&v->au.est_sub, &v->estimate, 0u);
+    mt_sub_init(&v->gcs.est_sub, &v->estimate, 0u);
+    mt_sub_init(&v->house.est_sub, &v->estimate, 0u);
+    mt_sub_init(&v->lg.est_sub, &v->estimate, 0u);
+    mt_sub_init(&v->lg.sp_sub, &v->att_sp, 0u);
+    return MT_OK;
 }
 
 mt_status_t veh_init(const veh_platform_t *plat, const veh_home_t *home,
@@ -257,16 +225,20 @@ mt_status_t veh_init(const veh_platform_t *plat, const veh_home_t *home,
 
     memset(v, 0, sizeof(*v));
     v->plat = plat;
-    v->s.home = *home;
-    v->s.speed_xy = 5.0f;
-    v->s.yaw_rate = 60.0f * VM_DEG2RAD;
-    v->boot_us = mt_port_now_us();
+    v->home = *home;
+    v->fl.speed_xy = 5.0f;
+    v->fl.yaw_rate = 60.0f * VM_DEG2RAD;
+    veh_console_init(plat);
     mt_sem_init(&v->bus.sem, true);
-    (void)veh_baro_link_init(&v->baro);
+    (void)veh_baro_link_init(&v->baro_link);
     veh_log_init(v);
     veh_auto_init(v);
     mt_proc_set_init(&v->timer_procs);
     mt_proc_set_init(&v->io_procs);
+    st = topics_init(v);
+    if (st != MT_OK) {
+        return st;
+    }
 
     st = mt_sched_init(&v->sched, g_tasks, VT_COUNT, VEH_LOOP_HZ, bad);
     if (st != MT_OK) {
@@ -277,6 +249,7 @@ mt_status_t veh_init(const veh_platform_t *plat, const veh_home_t *home,
     if (st != MT_OK) {
         return st;
     }
+    mt_sub_init(&v->house.battery_sub, &v->battery_topic, 0u);
     if ((mt_proc_register(&v->timer_procs, veh_baro_timer_proc, v) != MT_OK) ||
         (mt_proc_register(&v->timer_procs, mt_wq_timer_proc, &v->wq) != MT_OK) ||
         (mt_proc_register(&v->io_procs, veh_log_io_proc, v) != MT_OK)) {
@@ -340,8 +313,8 @@ void veh_task_cost(uint32_t i, uint32_t *cost_min_us, uint32_t *cost_max_us)
 const veh_counters_t *veh_counters(void)
 {
     veh_t *v = &g_veh;
-    v->c.baro_sent = v->baro.published;
-    v->c.baro_dropped = veh_baro_link_lost(&v->baro) + v->baro.refused;
+    v->c.baro_sent = v->baro_link.published;
+    v->c.baro_dropped = veh_baro_link_lost(&v->baro_link) + v->baro_link.refused;
     v->c.baro_bus_fail = v->baro_bus_fail;
     v->c.bus_transfers = v->bus.transfers;
     v->c.bus_waits = v->bus.waits;
@@ -354,9 +327,9 @@ void veh_note_crash(float speed_mps)
     veh_t *v = &g_veh;
     char b[16];
 
-    if (!v->s.crashed) {
-        v->s.crashed = true;
-        veh_say(v, "vehicle: CRASH: touchdown at %s m/s", vp_float(b, sizeof(b), speed_mps, 1u));
+    if (!v->crashed) {
+        v->crashed = true;
+        veh_say("vehicle: CRASH: touchdown at %s m/s", vp_float(b, sizeof(b), speed_mps, 1u));
         veh_disarm(v, "crash");
     }
 }
@@ -365,10 +338,10 @@ veh_phase_t veh_phase(void)
 {
     const veh_t *v = &g_veh;
 
-    if (v->s.crashed) {
+    if (v->crashed) {
         return VEH_PHASE_CRASHED;
     }
-    if (v->s.armed) {
+    if (v->fl.armed) {
         return VEH_PHASE_FLYING;
     }
     if (v->c.armed_us == 0u) {
@@ -377,7 +350,7 @@ veh_phase_t veh_phase(void)
     if (v->c.completions > 0u) {
         return VEH_PHASE_DONE;
     }
-    if ((v->s.mode == VEH_MODE_AUTO) && (v->mission.state == MT_MISSION_RUNNING)) {
+    if ((v->fl.mode == VEH_MODE_AUTO) && (v->mission.state == MT_MISSION_RUNNING)) {
         return VEH_PHASE_FLYING; /* landed by a LAND command; the mission goes on */
     }
     return VEH_PHASE_ABORTED;
@@ -395,8 +368,8 @@ const char *veh_incomplete_reason(void)
         (void)vp_snprintf(why, sizeof(why), "no mission (%s)", mt_status_str(v->mission_st));
     } else if (v->c.armed_us == 0u) {
         (void)vp_snprintf(why, sizeof(why), "never armed%s%s",
-                          (v->s.refuse_reason[0] != '\0') ? ": " : "", v->s.refuse_reason);
-    } else if (v->s.crashed) {
+                          (v->gcs.refuse_reason[0] != '\0') ? ": " : "", v->gcs.refuse_reason);
+    } else if (v->crashed) {
         (void)vp_snprintf(why, sizeof(why), "crashed");
     } else if (v->mission.state == MT_MISSION_STOPPED) {
         (void)vp_snprintf(why, sizeof(why), "mission stopped at #%u", v->mission.nav);
@@ -441,9 +414,9 @@ void veh_summary(const char *stop_reason)
         uint64_t end = (c->disarmed_us != 0u) ? c->disarmed_us : mt_port_now_us();
         veh_printf("flight time: %s s (armed at %s s, %s at %s s)\n",
                    vp_fix(a, sizeof(a), (int64_t)(end - c->armed_us), 1000000, 1u),
-                   vp_fix(b, sizeof(b), (int64_t)(c->armed_us - v->boot_us), 1000000, 1u),
+                   vp_fix(b, sizeof(b), (int64_t)(c->armed_us - veh_boot_us()), 1000000, 1u),
                    (c->disarmed_us != 0u) ? "disarmed" : "still armed",
-                   vp_fix(d, sizeof(d), (int64_t)(end - v->boot_us), 1000000, 1u));
+                   vp_fix(d, sizeof(d), (int64_t)(end - veh_boot_us()), 1000000, 1u));
     } else {
         veh_printf("flight time: 0.0 s (never armed)\n");
     }
@@ -492,7 +465,7 @@ void veh_summary(const char *stop_reason)
                (unsigned long long)v->timer_procs.dispatches,
                (unsigned)v->timer_procs.periods_missed, (unsigned long long)c->baro_sent,
                (unsigned long long)c->baro_received, (unsigned)c->baro_dropped,
-               (unsigned)mt_oring_available(&v->baro.ring), (unsigned)c->baro_bus_fail);
+               (unsigned)mt_oring_available(&v->baro_link.ring), (unsigned)c->baro_bus_fail);
     veh_printf("bus: %llu transactions, %u waited for the bus, %u timeouts\n",
                (unsigned long long)c->bus_transfers, (unsigned)c->bus_waits,
                (unsigned)c->bus_timeouts);

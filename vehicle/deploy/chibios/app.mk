@@ -7,7 +7,7 @@
 include $(HALDIR)/mk/kernel.mk
 VEH_DIR        := $(ROOTDIR)/vehicle
 VEH_FW_CSRC    := $(wildcard $(VEH_DIR)/src/*.c) $(wildcard $(VEH_DIR)/sim/*.c) \
-                  $(VEH_DIR)/deploy/builtin_mission.c
+                  $(VEH_DIR)/deploy/builtin_mission.c $(VEH_DIR)/deploy/startup.c
 APP_EXTRA_CSRC  := $(MT_KERNEL_CSRC) $(MT_PORT_CSRC) $(VEH_FW_CSRC)
 # 2 kHz RT tick: the 400 Hz samples (2500 us) fall on tick edges, so the main loop wakes
 # on time (with 1 kHz every other sample would wake 500 us late).

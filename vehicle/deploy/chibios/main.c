@@ -14,7 +14,8 @@
  * console: the main loop's lines go through a byte ring to the IO thread,
  * which writes the polled UART, so a task that prints does not wait for the
  * UART. Task times are real (instruction counts under QEMU -icount), not
- * simulated.
+ * simulated. Set-up, arm requests, end-of-run rules and the summary are the
+ * ones SITL uses (vehicle/deploy/startup.c).
  *
  * Uses only the kernel's public API, the port's services and the board
  * console: no ChibiOS header.
@@ -29,8 +30,8 @@
 #include "mt/mt.h"
 #include "mt_port_chibios.h"
 #include "simplat.h"
+#include "startup.h"
 #include "veh.h"
-#include "vprint.h"
 
 /* Seeded failure (make ... FAIL=1): the mission gets a jump to a command that does not
  * exist; the sequencer rejects it, the vehicle never arms, the run must exit non-zero. */
@@ -43,17 +44,13 @@
 #define LOOP_HZ 400u
 #define IO_PERIOD_US 2000u
 #define STOP_TIMEOUT_US 100000u
-#define ARM_FIRST_US 1000000u
-#define ARM_RETRY_US 500000u
-#define ARM_TIMEOUT_US 15000000u
 #define FLIGHT_TIMEOUT_US 240000000u
 #define SETTLE_US 500000u
 
 /* The platform context: the world first (simplat.h). */
 typedef struct {
     simplat_t world;
-    uint64_t boot_us;
-    uint64_t next_arm_us;
+    veh_run_t run; /* boot time, arm requests, end rules (startup.h) */
     /* log sink (IO thread): a streaming check of the record framing */
     uint64_t log_bytes;
     uint32_t log_records;
@@ -178,14 +175,7 @@ static void cb_telem(void *ctx, const uint8_t *data, uint32_t n)
 
 static veh_gcs_cmd_t cb_gcs_poll(void *ctx)
 {
-    fw_t *f = (fw_t *)ctx;
-    uint64_t now = mt_port_now_us();
-
-    if ((veh_phase() == VEH_PHASE_BOOT) && (now >= f->next_arm_us)) {
-        f->next_arm_us = now + ARM_RETRY_US;
-        return VEH_GCS_ARM_AUTO;
-    }
-    return VEH_GCS_NONE;
+    return veh_run_arm_poll(&((fw_t *)ctx)->run);
 }
 
 static uint32_t failures;
@@ -203,12 +193,10 @@ int main(void)
 {
     veh_platform_t plat = {0};
     veh_home_t home;
-    const char *reason = NULL;
     uint32_t bad = 0u;
     uint32_t period_us;
     uint32_t cmin;
     uint32_t cmax;
-    uint64_t end_us = 0u;
     mt_status_t st;
     const veh_counters_t *c;
 
@@ -217,22 +205,22 @@ int main(void)
     mt_chibios_set_priority(MT_PRIO_MAIN, 0);
     (void)mt_bring_init(&console_ring, console_store, (uint32_t)sizeof(console_store));
 
-    home.lat = veh_builtin_mission[0].x;
-    home.lon = veh_builtin_mission[0].y;
-    home.alt_cm = veh_builtin_mission[0].z;
+    veh_run_home(&home, &veh_builtin_mission[0]);
     if (mt_chibios_metronome_init(&metronome, LOOP_HZ) != MT_OK) {
         fw_puts("metronome init failed\r\n");
         fw_exit(FW_EXIT_FAILURE);
     }
     simplat_init(&g.world, &home, 1u, mt_chibios_metronome_wait, &metronome);
-    simplat_fill(&g.world, &plat);
-    plat.ctx = &g; /* the world is the first member */
+    /* veh_run_start adds the world's callbacks (plat.ctx: the world, first member of g) */
     plat.console = cb_console;
     plat.log_sink = cb_log_sink;
     plat.telem_write = cb_telem;
     plat.gcs_poll = cb_gcs_poll;
     plat.task_work = NULL; /* real execution time */
     plat.status_lines = true;
+    g.run.timeout_us = FLIGHT_TIMEOUT_US;
+    g.run.settle_us = SETTLE_US;
+    g.run.max_ticks = 0u;
 
     if (VEH_FW_FAIL == 1) {
         uint16_t i;
@@ -244,12 +232,11 @@ int main(void)
         bad_mission[i].options = 1u;
         bad_mission[i].param[0] = 99 * MT_MISSION_MILLI;
         bad_mission[i].param[1] = 1 * MT_MISSION_MILLI;
-        st = veh_init(&plat, &home, bad_mission, (uint16_t)(i + 1u), &bad);
+        st = veh_run_start(&g.run, &plat, &g.world, &home, bad_mission, (uint16_t)(i + 1u), &bad);
     } else {
-        st = veh_init(&plat, &home, veh_builtin_mission, veh_builtin_mission_len, &bad);
+        st = veh_run_start(&g.run, &plat, &g.world, &home, veh_builtin_mission,
+                           veh_builtin_mission_len, &bad);
     }
-    g.boot_us = mt_port_now_us();
-    g.next_arm_us = g.boot_us + ARM_FIRST_US;
     veh_printf("metronome firmware: ChibiOS/RT, loop %u Hz, %u tasks, built-in mission of %u "
                "items\n",
                (unsigned)veh_sched()->loop_rate_hz, (unsigned)veh_sched()->ntasks,
@@ -258,11 +245,7 @@ int main(void)
         veh_printf("task table rejected: %s at entry %u\n", mt_status_str(st), (unsigned)bad);
         fw_exit(FW_EXIT_FAILURE);
     }
-    if (st != MT_OK) {
-        veh_printf("mission rejected by the sequencer: %s at index %u; the vehicle stays "
-                   "disarmed\n",
-                   mt_status_str(st), (unsigned)bad);
-    }
+    (void)veh_run_rejected(st, bad);
     veh_timer_spec(&period_us, &cmin, &cmax);
     if ((mt_proc_register(veh_io_procs(), console_drain, NULL) != MT_OK) ||
         (mt_chibios_proc_thread_start(&timer_thread, "timer", veh_timer_procs(), period_us,
@@ -276,57 +259,19 @@ int main(void)
         fw_exit(FW_EXIT_FAILURE);
     }
 
-    for (;;) {
-        uint64_t now;
-        veh_phase_t ph;
+    do {
         veh_loop_once(simplat_wait, &g.world);
-        now = mt_port_now_us() - g.boot_us;
-        if (g.world.sim.crashed) {
-            veh_note_crash(g.world.sim.last_touchdown_speed);
-        }
-        ph = veh_phase();
-        if (reason == NULL) {
-            if (ph == VEH_PHASE_DONE) {
-                reason = "mission complete, vehicle landed and disarmed";
-            } else if (ph == VEH_PHASE_ABORTED) {
-                reason = "vehicle landed and disarmed, mission not complete";
-            } else if (ph == VEH_PHASE_CRASHED) {
-                reason = "crash";
-            } else if ((ph == VEH_PHASE_BOOT) && (now > ARM_TIMEOUT_US)) {
-                reason = "the vehicle never armed";
-            } else if (now > FLIGHT_TIMEOUT_US) {
-                reason = "timeout";
-            } else {
-                /* flying */
-            }
-            if (reason != NULL) {
-                end_us = now + SETTLE_US;
-            }
-        }
-        if ((reason != NULL) && (now >= end_us)) {
-            break;
-        }
-    }
+    } while (veh_run_after_tick(&g.run, &g.world));
     check(mt_chibios_proc_thread_stop(&timer_thread, STOP_TIMEOUT_US) == MT_OK,
           "timer thread stopped");
     check(mt_chibios_proc_thread_stop(&io_thread, STOP_TIMEOUT_US) == MT_OK, "io thread stopped");
     check(mt_chibios_wq_stop(&wq_thread, STOP_TIMEOUT_US) == MT_OK, "work-queue thread stopped");
     /* the threads have exited: main is now the only consumer of the log and the console */
-    (void)mt_proc_dispatch(veh_io_procs());
-    (void)mt_proc_dispatch(veh_io_procs());
+    veh_run_drain();
     console_direct = true;
 
-    veh_summary(reason);
+    veh_run_summary(&g.run, &g.world);
     c = veh_counters();
-    {
-        char a[16];
-        char b[16];
-        veh_printf("world: max altitude %s m, max ground speed %s m/s, touchdowns %u, bus "
-                   "collisions %u, servo writes %u\n",
-                   vp_float(a, sizeof(a), g.world.max_alt, 1u),
-                   vp_float(b, sizeof(b), g.world.max_speed, 1u), (unsigned)g.world.sim.touchdowns,
-                   (unsigned)g.world.collisions, (unsigned)g.world.servo_writes);
-    }
     veh_printf("log sink: %llu bytes, %u records checked, %u bad; metronome: %llu samples, %u "
                "missed; timer round max %u us; console: %u bytes lost\n",
                (unsigned long long)g.log_bytes, (unsigned)g.log_records, (unsigned)g.log_bad,

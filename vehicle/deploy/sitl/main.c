@@ -34,6 +34,7 @@
  * (rejected mission, never armed, crash, timeout), 2 usage or I/O error.
  */
 #define _GNU_SOURCE
+#include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -45,14 +46,11 @@
 #include "mt_posix.h"
 #include "report.h"
 #include "simplat.h"
+#include "startup.h"
 #include "veh.h"
-#include "vprint.h"
 #include "wpl.h"
 
 #define SIM_START_US 1000000u
-#define ARM_FIRST_US 1000000u /* first arm request after boot */
-#define ARM_RETRY_US 500000u
-#define ARM_TIMEOUT_US 15000000u
 #define MAX_EVENTS 16
 #define SETTLE_US 1000000u /* run on after the end for the log to drain */
 
@@ -79,9 +77,9 @@ typedef struct {
     uint64_t rng;
     /* real time */
     mt_posix_metronome_t met;
-    /* ground station */
-    uint64_t boot_us;
-    uint64_t next_arm_us;
+    /* the run (startup.h): boot time, arm requests, end rules */
+    veh_run_t run;
+    /* ground station events */
     sitl_event_t ev[MAX_EVENTS];
     int nev;
     int next_ev;
@@ -128,14 +126,10 @@ static veh_gcs_cmd_t cb_gcs_poll(void *ctx)
     sitl_t *s = (sitl_t *)ctx;
     uint64_t now = mt_port_now_us();
 
-    if ((s->next_ev < s->nev) && (now >= s->boot_us + s->ev[s->next_ev].t_us)) {
+    if ((s->next_ev < s->nev) && (now >= s->run.boot_us + s->ev[s->next_ev].t_us)) {
         return s->ev[s->next_ev++].cmd;
     }
-    if ((veh_phase() == VEH_PHASE_BOOT) && (now >= s->next_arm_us)) {
-        s->next_arm_us = now + ARM_RETRY_US;
-        return VEH_GCS_ARM_AUTO;
-    }
-    return VEH_GCS_NONE;
+    return veh_run_arm_poll(&s->run);
 }
 
 /* ---- simulated time ------------------------------------------------------------------------- */
@@ -207,7 +201,7 @@ static void cb_task_work(void *ctx, uint32_t task, uint32_t cmin, uint32_t cmax)
     uint64_t us = cost(s, cmin, cmax);
 
     if ((int)task == s->overrun_task) {
-        uint64_t t = mt_port_now_us() - s->boot_us;
+        uint64_t t = mt_port_now_us() - s->run.boot_us;
         if ((t >= s->overrun_from_us) && (t < s->overrun_to_us)) {
             us += s->overrun_us;
             s->overrun_runs++;
@@ -366,9 +360,7 @@ static int load_file(const char *path, mt_mission_cmd_t *cmds, veh_home_t *home)
             }
         }
         if ((result > 0) && (cmds[0].x != 0 || cmds[0].y != 0)) {
-            home->lat = cmds[0].x;
-            home->lon = cmds[0].y;
-            home->alt_cm = cmds[0].z;
+            veh_run_home(home, &cmds[0]);
         }
     } else {
         printf("mission file rejected: %s:%u: %s\n", path, (unsigned)e.line, e.reason);
@@ -468,6 +460,23 @@ static bool parse_overrun(const char *a)
     return true;
 }
 
+/* --timeout S in us: now > this exactly when now > S * 1e6 (now is whole microseconds). */
+static uint64_t run_timeout_us(double s)
+{
+    double us = s * 1e6;
+
+    if (isnan(us)) {
+        return UINT64_MAX; /* NaN: never */
+    }
+    if (!(us > 0.0)) {
+        return 0u;
+    }
+    if (us >= 1.8e19) {
+        return UINT64_MAX;
+    }
+    return (uint64_t)us;
+}
+
 static double wall_s(void)
 {
     struct timespec ts;
@@ -496,7 +505,6 @@ int main(int argc, char **argv)
     mt_posix_proc_thread_t timer_thr;
     mt_posix_proc_thread_t io_thr;
     mt_posix_wq_thread_t wq_thr;
-    const char *reason;
     double w0;
     int rc;
     int i;
@@ -575,9 +583,7 @@ int main(int argc, char **argv)
     if (builtin) {
         ncmds = (int)veh_builtin_mission_len;
         memcpy(cmds, veh_builtin_mission, (size_t)ncmds * sizeof(cmds[0]));
-        home.lat = cmds[0].x;
-        home.lon = cmds[0].y;
-        home.alt_cm = cmds[0].z;
+        veh_run_home(&home, &cmds[0]);
     } else {
         ncmds = load_file(mission_path, cmds, &home);
         if (ncmds < 0) {
@@ -589,21 +595,21 @@ int main(int argc, char **argv)
                  g.sim ? (void *)&g : (void *)&g.met);
     simplat_set_wind(&g.world, (float)wind_n, (float)wind_e);
     memset(&plat, 0, sizeof(plat));
-    simplat_fill(&g.world, &plat);
-    plat.ctx = &g; /* the world is the first member */
     plat.console = cb_console;
     plat.log_sink = cb_log_sink;
     plat.telem_write = cb_telem;
     plat.gcs_poll = cb_gcs_poll;
     plat.task_work = g.sim ? cb_task_work : NULL;
     plat.status_lines = !quiet;
+    g.run.timeout_us = run_timeout_us(timeout_s);
+    g.run.settle_us = SETTLE_US;
+    g.run.max_ticks = max_ticks;
 
-    st = veh_init(&plat, &home, cmds, (uint16_t)ncmds, &bad);
-    g.boot_us = mt_port_now_us();
-    g.next_arm_us = g.boot_us + ARM_FIRST_US;
+    /* plat.ctx: the world, the first member of g */
+    st = veh_run_start(&g.run, &plat, &g.world, &home, cmds, (uint16_t)ncmds, &bad);
     veh_timer_spec(&g.timer_period, &g.timer_cmin, &g.timer_cmax);
     g.period_us = veh_sched()->period_us;
-    g.next_timer = g.boot_us + g.timer_period;
+    g.next_timer = g.run.boot_us + g.timer_period;
     if ((st != MT_OK) && (veh_sched()->ntasks == 0u)) {
         fprintf(stderr, "sitl: task table rejected: %s at entry %u\n", mt_status_str(st), bad);
         return 2;
@@ -624,14 +630,12 @@ int main(int argc, char **argv)
     veh_printf("metronome SITL: %s time, loop %u Hz, %u tasks, seed %llu\n",
                g.sim ? "simulated" : "real", (unsigned)veh_sched()->loop_rate_hz,
                (unsigned)veh_sched()->ntasks, (unsigned long long)seed);
-    if (st != MT_OK) {
-        veh_printf("mission rejected by the sequencer: %s at index %u; the vehicle stays "
-                   "disarmed\n",
-                   mt_status_str(st), (unsigned)bad);
-    } else if (ncmds == 0) {
-        veh_printf("no mission loaded; the vehicle stays disarmed\n");
-    } else {
-        veh_printf("mission: %d items (%s)\n", ncmds, builtin ? "built-in" : mission_path);
+    if (!veh_run_rejected(st, bad)) {
+        if (ncmds == 0) {
+            veh_printf("no mission loaded; the vehicle stays disarmed\n");
+        } else {
+            veh_printf("mission: %d items (%s)\n", ncmds, builtin ? "built-in" : mission_path);
+        }
     }
     if (g.overrun_task >= 0) {
         veh_printf("fault injection: %s takes %u us more per run\n", g_overrun_name,
@@ -650,47 +654,16 @@ int main(int argc, char **argv)
     }
 
     w0 = wall_s();
-    reason = NULL;
-    {
-        uint64_t end_us = 0u;
-        for (;;) {
-            uint64_t now;
-            veh_phase_t ph;
-            if (g.trace != NULL) {
-                trace_tick_begin();
-            }
-            veh_loop_once(simplat_wait, &g.world);
-            if (g.trace != NULL) {
-                trace_tick_end(max_ticks);
-            }
-            now = mt_port_now_us() - g.boot_us;
-            if (g.world.sim.crashed) {
-                veh_note_crash(g.world.sim.last_touchdown_speed);
-            }
-            ph = veh_phase();
-            if ((reason == NULL) && (max_ticks != 0u) && (veh_sched()->tick >= max_ticks)) {
-                reason = "tick limit reached";
-                break; /* exactly max_ticks ticks */
-            }
-            if (reason == NULL) {
-                if (ph == VEH_PHASE_DONE) {
-                    reason = "mission complete, vehicle landed and disarmed";
-                } else if (ph == VEH_PHASE_ABORTED) {
-                    reason = "vehicle landed and disarmed, mission not complete";
-                } else if (ph == VEH_PHASE_CRASHED) {
-                    reason = "crash";
-                } else if ((ph == VEH_PHASE_BOOT) && (now > ARM_TIMEOUT_US)) {
-                    reason = "the vehicle never armed";
-                } else if ((double)now > timeout_s * 1e6) {
-                    reason = "timeout";
-                }
-                if (reason != NULL) {
-                    end_us = now + SETTLE_US;
-                }
-            }
-            if ((reason != NULL) && (now >= end_us)) {
-                break;
-            }
+    for (;;) {
+        if (g.trace != NULL) {
+            trace_tick_begin();
+        }
+        veh_loop_once(simplat_wait, &g.world);
+        if (g.trace != NULL) {
+            trace_tick_end(max_ticks);
+        }
+        if (!veh_run_after_tick(&g.run, &g.world)) {
+            break;
         }
     }
     if (!g.sim) {
@@ -699,19 +672,8 @@ int main(int argc, char **argv)
         mt_posix_wq_stop(&wq_thr);
     }
     /* drain what is left of the log (the IO thread is stopped: this is its consumer now) */
-    (void)mt_proc_dispatch(veh_io_procs());
-    (void)mt_proc_dispatch(veh_io_procs());
-
-    veh_summary(reason);
-    {
-        char a[16];
-        char b[16];
-        veh_printf("world: max altitude %s m, max ground speed %s m/s, touchdowns %u, bus "
-                   "collisions %u, servo writes %u\n",
-                   vp_float(a, sizeof(a), g.world.max_alt, 1u),
-                   vp_float(b, sizeof(b), g.world.max_speed, 1u), (unsigned)g.world.sim.touchdowns,
-                   (unsigned)g.world.collisions, (unsigned)g.world.servo_writes);
-    }
+    veh_run_drain();
+    veh_run_summary(&g.run, &g.world);
     if (g.overrun_task >= 0) {
         veh_printf("fault injection: %llu runs of %s overran by %u us\n",
                    (unsigned long long)g.overrun_runs, g_overrun_name, (unsigned)g.overrun_us);
@@ -730,7 +692,7 @@ int main(int argc, char **argv)
     fflush(stdout);
     {
         double w = wall_s() - w0;
-        double simulated = (double)(mt_port_now_us() - g.boot_us) * 1e-6;
+        double simulated = (double)(mt_port_now_us() - g.run.boot_us) * 1e-6;
         fprintf(stderr, "sitl: %.1f s %s in %.2f s of wall time (%.0fx real time)\n", simulated,
                 g.sim ? "simulated" : "flown", w, (w > 0.0) ? simulated / w : 0.0);
     }
