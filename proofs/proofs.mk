@@ -38,8 +38,12 @@ WP_SMOKE_TIMEOUT := 2
 ifeq ($(WP_SMOKE_TIMEOUT),$(WP_TIMEOUT))
 $(error WP_SMOKE_TIMEOUT must differ from WP_TIMEOUT: Z3 declines tasks with the smoke limit)
 endif
-WP_PAR       := 2
-WP_JOBS      := 2
+# -wp-par (prover processes per module) and modules at a time. A warm run sends few goals to the
+# provers, so 2 x 2 is safe there; make prove-cold, where every goal goes to the provers, runs
+# WP_PAR=1 in one lane (2 prover processes on the 2 cores): with more, a goal that takes 7 s on
+# an idle core gets a third of one and hits the 20 s limit.
+WP_PAR       ?= 2
+WP_JOBS      ?= 2
 WP_PROVERS   ?= z3-fixedto,cvc4
 # The WP result cache: `update` replays recorded verdicts of byte-identical prover tasks and
 # records new ones. Each module's session is seeded from the committed bundle
@@ -105,10 +109,12 @@ reprove:
 	@WP_REUSE_LOCAL=yes tools/prove.sh
 
 # Everything from nothing: no WP cache (every prover runs on every goal), every CBMC property
-# and coverage run made fresh, the capacity-maximum CBMC tier; the report says "cold".
+# and coverage run made fresh, the capacity-maximum CBMC tier; the report says "cold". One lane
+# and one prover process per module (WP_PAR above), so no goal times out for want of a core.
 prove-cold:
 	@rm -rf $(WP_DIR) $(BUILD)/proof/cbmc
-	@PROVE_COLD=1 WP_REUSE_LOCAL= WP_CACHE=none CBMC_RECORD=fresh tools/prove.sh
+	@PROVE_COLD=1 PROVE_LANES=1 WP_PAR=1 WP_REUSE_LOCAL= WP_CACHE=none CBMC_RECORD=fresh \
+	    tools/prove.sh
 
 # Sharded proofs (tools/prove_shard.py): `make prove PROVE_SHARD=i/N` on N machines, then
 # `make prove-merge SHARDS="dir1 ... dirN"` (each the BUILD folder of one shard) writes one

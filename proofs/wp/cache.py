@@ -86,7 +86,7 @@ def main(argv):
         print(f"cache: {save(argv[2], argv[3])} entries in {argv[3]}")
     elif len(argv) == 3 and argv[1] == "count":
         c, f = count(argv[2])
-        print(f"replayed {c} fresh {f}")
+        print(f"replayed {c} fresh " + (str(f) if f is not None else "all (cache off)"))
     else:
         print(__doc__)
         return 2

@@ -185,6 +185,10 @@ def module_stats(module, wp_dir):
         if prover == "wp:main":
             continue
         res["by_prover"][prover] = v.get("valid", 0)
+    if res["cache_fresh"] is None and not res["replayed_local"]:
+        # No cache line: the cache was off (WP_CACHE=none, make prove-cold), so every goal and
+        # smoke test that Qed did not decide went to the provers in this run.
+        res["cache_fresh"] = res["goals"] + res["smoke"] - res["by_prover"].get("qed", 0)
     return res
 
 
