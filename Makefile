@@ -22,7 +22,7 @@ help:
 	@echo "Build"
 	@echo "  make                 kernel and host port with gcc and clang (warnings are errors)"
 	@echo "  make cross           the kernel for Cortex-M4, bytes per module"
-	@echo "  make mission-tool    build/mt-mission (check QGC WPL 110 mission files, print the plan)"
+	@echo "  make mission-tool    build/mt-mission (check and convert WPL 110 and .plan mission files)"
 	@echo "  make clean"
 	@echo "Test"
 	@echo "  make test            install test deps; googletest suite under gcc, clang, ASan, UBSan,"
@@ -96,7 +96,7 @@ $(BUILD)/$(1)/mt_tests: $(TEST_SRC) $(TEST_HDR) $(BUILD)/$(1)/libmt.a $(BUILD)/$
                         $(BUILD)/$(1)/libmt_mission_host.a
 	$(2) $(WARN_CXX) $(3) $(KERNEL_INC) -Ihal_posix -Itests -Imission $(TEST_SRC) \
 	    $(BUILD)/$(1)/libmt_mission_host.a $(BUILD)/$(1)/libmt_posix.a $(BUILD)/$(1)/libmt.a \
-	    -lgtest -lgtest_main -pthread -lm -o $$@
+	    -lcjson -lgtest -lgtest_main -pthread -lm -o $$@
 endef
 $(eval $(call test_bin,gcc,g++,-O2 -g))
 $(eval $(call test_bin,clang,clang++,-O2 -g))

@@ -15,7 +15,37 @@ typedef struct {
     mt_report_t *rep;
     mt_plan_step_t *plan;
     size_t max_plan;
+    size_t steps; /**< commands started, recorded or not */
 } sim_t;
+
+/* The part of a running mission that decides what it does next. */
+typedef struct {
+    uint8_t state;
+    uint8_t do_done;
+    uint16_t nav;
+    uint16_t do_cmd;
+    uint16_t wpos;
+    uint16_t prev_nav;
+    int16_t count[MT_CFG_MISSION_MAX_CMDS];
+} snap_t;
+
+static void snap_take(snap_t *s, const mt_mission_t *m)
+{
+    s->state = m->state;
+    s->do_done = m->do_done;
+    s->nav = m->nav;
+    s->do_cmd = m->do_cmd;
+    s->wpos = m->wpos;
+    s->prev_nav = m->prev_nav;
+    memcpy(s->count, m->count, (size_t)m->total * sizeof m->count[0]);
+}
+
+static int snap_same(const snap_t *s, const mt_mission_t *m)
+{
+    return s->state == m->state && s->do_done == m->do_done && s->nav == m->nav && s->do_cmd == m->do_cmd &&
+           s->wpos == m->wpos && s->prev_nav == m->prev_nav &&
+           memcmp(s->count, m->count, (size_t)m->total * sizeof m->count[0]) == 0;
+}
 
 static bool sim_start(void *ctx, uint16_t i, const mt_mission_cmd_t *c)
 {
@@ -27,9 +57,8 @@ static bool sim_start(void *ctx, uint16_t i, const mt_mission_cmd_t *c)
         st->command = c->id;
         st->kind = mt_mission_kind_of(c->id);
         s->rep->nplan++;
-    } else {
-        s->rep->truncated = 1;
     }
+    s->steps++;
     return true;
 }
 
@@ -78,8 +107,58 @@ static void add_err(mt_report_t *rep, const mt_wpl_error_t *e)
     }
 }
 
+/* Run the sequencer with every verify succeeding; record the plan, decide why it is cut. */
+static void run_plan(mt_mission_t *m, sim_t *sim, mt_report_t *rep)
+{
+    const size_t limit = 8u * (sim->max_plan + 8u) + MT_REPORT_EXTRA_UPDATES;
+    snap_t *snap = malloc(sizeof *snap);
+    size_t guard = 0u;
+    size_t since = 0u;
+    size_t power = 1u;
+    int have_snap = 0;
+    int forever = 0;
+
+    if (snap == NULL || mt_mission_start(m) != MT_OK) {
+        free(snap);
+        return;
+    }
+    while (m->state == MT_MISSION_RUNNING && guard < limit) {
+        (void)mt_mission_update(m);
+        guard++;
+        if (sim->steps <= sim->max_plan) {
+            continue;
+        }
+        /* past the plan limit: does the (deterministic) run come back to a state? */
+        if (have_snap && snap_same(snap, m)) {
+            forever = 1;
+            break;
+        }
+        if (++since == power) {
+            snap_take(snap, m);
+            have_snap = 1;
+            power *= 2u;
+            since = 0u;
+        }
+    }
+    free(snap);
+    if (m->state != MT_MISSION_RUNNING) {
+        rep->plan_total = sim->steps;
+    }
+    if (forever) {
+        rep->truncated = MT_REPORT_FOREVER;
+    } else if (sim->steps > sim->max_plan || m->state == MT_MISSION_RUNNING) {
+        rep->truncated = MT_REPORT_OVER_LIMIT;
+    }
+}
+
 mt_status_t mt_report_check(const char *text, size_t len, mt_plan_step_t *plan, size_t max_plan,
                             mt_report_t *rep)
+{
+    return mt_report_check_as(MT_MFILE_AUTO, text, len, plan, max_plan, rep);
+}
+
+mt_status_t mt_report_check_as(mt_mfile_format_t fmt, const char *text, size_t len, mt_plan_step_t *plan,
+                               size_t max_plan, mt_report_t *rep)
 {
     mt_wpl_item_t *items = calloc(MT_CFG_MISSION_MAX_CMDS, sizeof *items);
     mt_mission_cmd_t *cmds = calloc(MT_CFG_MISSION_MAX_CMDS, sizeof *cmds);
@@ -92,13 +171,14 @@ mt_status_t mt_report_check(const char *text, size_t len, mt_plan_step_t *plan, 
 
     memset(rep, 0, sizeof *rep);
     rep->plan = plan;
+    rep->max_plan = max_plan;
     if (items == NULL || cmds == NULL || m == NULL) {
         free(items);
         free(cmds);
         free(m);
         return MT_E_FULL;
     }
-    first = mt_wpl_parse(text, len, items, MT_CFG_MISSION_MAX_CMDS, &n, &e);
+    first = mt_mfile_parse(fmt, text, len, items, MT_CFG_MISSION_MAX_CMDS, &n, &e, &rep->warnings);
     rep->nitems = n;
     if (first != MT_OK) {
         add_err(rep, &e);
@@ -107,6 +187,7 @@ mt_status_t mt_report_check(const char *text, size_t len, mt_plan_step_t *plan, 
     if (n == 0u) {
         memset(&e, 0, sizeof e);
         e.st = MT_E_MISSION_SIZE;
+        e.line = 1u;
         e.index = 0u;
         strcpy(e.reason, "no items: a mission needs at least the home entry (index 0)");
         add_err(rep, &e);
@@ -122,6 +203,11 @@ mt_status_t mt_report_check(const char *text, size_t len, mt_plan_step_t *plan, 
                 first = st;
             }
             cmds[i].id = 0xFFFFu; /* unknown: the per-command check would repeat the error */
+        } else if (cmds[i].frame != items[i].frame) {
+            mt_wpl_warn(&rep->warnings, items[i].line, 3u, (uint32_t)i,
+                        "frame %u ignored: command %u (%s) has no location; checked as frame 2 (MISSION)",
+                        (unsigned)items[i].frame, (unsigned)items[i].command,
+                        mt_wpl_cmd_name(items[i].command) != NULL ? mt_wpl_cmd_name(items[i].command) : "?");
         }
     }
     for (i = 0u; i < n; i++) {
@@ -173,15 +259,8 @@ mt_status_t mt_report_check(const char *text, size_t len, mt_plan_step_t *plan, 
     }
     rep->valid = 1;
     /* the plan: run the sequencer */
-    if (n >= 2u && mt_mission_start(m) == MT_OK) {
-        size_t guard = 0u;
-        while (m->state == MT_MISSION_RUNNING && !rep->truncated && guard < 8u * (max_plan + 8u)) {
-            (void)mt_mission_update(m);
-            guard++;
-        }
-        if (m->state == MT_MISSION_RUNNING) {
-            rep->truncated = 1;
-        }
+    if (n >= 2u) {
+        run_plan(m, &sim, rep);
     }
 out:
     free(items);
@@ -228,10 +307,49 @@ static void put_json_str(buf_t *b, const char *s)
     put(b, "\"");
 }
 
+/* {"line", "field", "index", ["status",] "reason"} */
+static void put_json_diag(buf_t *b, const mt_wpl_error_t *e, int with_status)
+{
+    put(b, "{\"line\": %u, \"field\": %u, \"index\": ", (unsigned)e->line, (unsigned)e->field);
+    if (e->index == MT_MISSION_NONE) {
+        put(b, "null");
+    } else {
+        put(b, "%u", (unsigned)e->index);
+    }
+    if (with_status) {
+        put(b, ", \"status\": ");
+        put_json_str(b, mt_status_str(e->st));
+    }
+    put(b, ", \"reason\": ");
+    put_json_str(b, e->reason);
+    put(b, "}");
+}
+
 static const char *cmd_label(uint16_t id)
 {
     const char *n = mt_wpl_cmd_name(id);
     return n != NULL ? n : "?";
+}
+
+/* "file:line: field F: index I:" (line 0: no line, e.g. a .plan item) */
+static void put_where(buf_t *b, const char *file, const mt_wpl_error_t *e)
+{
+    if (e->line != 0u) {
+        put(b, "%s:%u:", file, (unsigned)e->line);
+    } else {
+        put(b, "%s:", file);
+    }
+    if (e->field != 0u) {
+        put(b, " field %u:", (unsigned)e->field);
+    }
+    if (e->index != MT_MISSION_NONE) {
+        put(b, " index %u:", (unsigned)e->index);
+    }
+}
+
+static const char *trunc_reason(int t)
+{
+    return t == (int)MT_REPORT_FOREVER ? "repeats forever" : "longer than the plan limit";
 }
 
 size_t mt_report_text(const mt_report_t *rep, const char *file, char *out, size_t cap)
@@ -242,15 +360,16 @@ size_t mt_report_text(const mt_report_t *rep, const char *file, char *out, size_
     if (cap > 0u) {
         out[0] = '\0';
     }
+    for (i = 0u; i < rep->warnings.n; i++) {
+        put_where(&b, file, &rep->warnings.w[i]);
+        put(&b, " warning: %s\n", rep->warnings.w[i].reason);
+    }
+    if (rep->warnings.dropped != 0u) {
+        put(&b, "%s: warning: %u more warnings not shown\n", file, (unsigned)rep->warnings.dropped);
+    }
     for (i = 0u; i < rep->nerr; i++) {
         const mt_wpl_error_t *e = &rep->errors[i];
-        put(&b, "%s:%u:", file, (unsigned)e->line);
-        if (e->field != 0u) {
-            put(&b, " field %u:", (unsigned)e->field);
-        }
-        if (e->index != MT_MISSION_NONE) {
-            put(&b, " index %u:", (unsigned)e->index);
-        }
+        put_where(&b, file, e);
         put(&b, " %s [%s]\n", e->reason, mt_status_str(e->st));
     }
     if (!rep->valid) {
@@ -264,8 +383,16 @@ size_t mt_report_text(const mt_report_t *rep, const char *file, char *out, size_
         put(&b, "  %4u  %-3s  #%-4u %s (%u)\n", (unsigned)i + 1u, s->kind == MT_MISSION_KIND_NAV ? "nav" : "do",
             (unsigned)s->index, cmd_label(s->command), (unsigned)s->command);
     }
-    if (rep->truncated) {
-        put(&b, "  ... truncated after %u steps (the mission repeats forever)\n", (unsigned)rep->nplan);
+    if (rep->truncated == (int)MT_REPORT_FOREVER) {
+        put(&b, "  ... truncated after %u steps: the mission repeats forever\n", (unsigned)rep->nplan);
+    } else if (rep->truncated != 0 && rep->plan_total != 0u) {
+        put(&b, "  ... truncated after %u steps: longer than the plan limit (%u steps in all; --max-plan)\n",
+            (unsigned)rep->nplan, (unsigned)rep->plan_total);
+    } else if (rep->truncated != 0) {
+        put(&b,
+            "  ... truncated after %u steps: longer than the plan limit (no end and no repetition found "
+            "in %u more sequencer updates)\n",
+            (unsigned)rep->nplan, (unsigned)MT_REPORT_EXTRA_UPDATES);
     } else {
         put(&b, "  mission complete\n");
     }
@@ -282,27 +409,32 @@ size_t mt_report_json(const mt_report_t *rep, char *out, size_t cap)
     }
     put(&b, "{\"valid\": %s, \"errors\": [", rep->valid ? "true" : "false");
     for (i = 0u; i < rep->nerr; i++) {
-        const mt_wpl_error_t *e = &rep->errors[i];
-        put(&b, "%s{\"line\": %u, \"field\": %u, \"index\": ", i ? ", " : "", (unsigned)e->line,
-            (unsigned)e->field);
-        if (e->index == MT_MISSION_NONE) {
-            put(&b, "null");
-        } else {
-            put(&b, "%u", (unsigned)e->index);
-        }
-        put(&b, ", \"status\": ");
-        put_json_str(&b, mt_status_str(e->st));
-        put(&b, ", \"reason\": ");
-        put_json_str(&b, e->reason);
-        put(&b, "}");
+        put(&b, "%s", i ? ", " : "");
+        put_json_diag(&b, &rep->errors[i], 1);
     }
-    put(&b, "], \"plan\": [");
+    put(&b, "], \"warnings\": [");
+    for (i = 0u; i < rep->warnings.n; i++) {
+        put(&b, "%s", i ? ", " : "");
+        put_json_diag(&b, &rep->warnings.w[i], 0);
+    }
+    put(&b, "], \"warnings_not_shown\": %u", (unsigned)rep->warnings.dropped);
+    put(&b, ", \"plan\": [");
     for (i = 0u; i < rep->nplan; i++) {
         const mt_plan_step_t *s = &rep->plan[i];
         put(&b, "%s{\"index\": %u, \"command\": %u, \"name\": \"%s\", \"kind\": \"%s\"}", i ? ", " : "",
             (unsigned)s->index, (unsigned)s->command, cmd_label(s->command),
             s->kind == MT_MISSION_KIND_NAV ? "nav" : "do");
     }
-    put(&b, "], \"truncated\": %s}\n", rep->truncated ? "true" : "false");
+    put(&b, "], \"truncated\": %s, \"truncated_reason\": ", rep->truncated ? "true" : "false");
+    if (rep->truncated) {
+        put_json_str(&b, trunc_reason(rep->truncated));
+    } else {
+        put(&b, "null");
+    }
+    if (rep->valid && rep->plan_total != 0u) {
+        put(&b, ", \"plan_total\": %u}\n", (unsigned)rep->plan_total);
+    } else {
+        put(&b, ", \"plan_total\": null}\n");
+    }
     return b.used;
 }

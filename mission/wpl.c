@@ -85,17 +85,66 @@ static int parse_double(const char *tok, double *out)
     return 1;
 }
 
-mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, size_t cap, size_t *n,
-                         mt_wpl_error_t *err)
+void mt_wpl_warn(mt_wpl_warnings_t *warn, uint32_t line, uint32_t field, uint32_t index, const char *fmt, ...)
 {
+    va_list ap;
+    mt_wpl_error_t *w;
+
+    if (warn == NULL) {
+        return;
+    }
+    if (warn->n >= MT_WPL_MAX_WARNINGS) {
+        warn->dropped++;
+        return;
+    }
+    w = &warn->w[warn->n++];
+    w->st = MT_OK;
+    w->line = line;
+    w->field = field;
+    w->index = index;
+    va_start(ap, fmt);
+    vsnprintf(w->reason, sizeof w->reason, fmt, ap);
+    va_end(ap);
+}
+
+/* The line [*start, *end) beginning at *pos; a line ends at LF, CRLF or a lone CR. Advances
+ * *pos past the line end. */
+static void next_line(const char *text, size_t len, size_t *pos, size_t *start, size_t *end)
+{
+    size_t p = *pos;
+
+    *start = p;
+    while (p < len && text[p] != '\n' && text[p] != '\r') {
+        p++;
+    }
+    *end = p;
+    if (p < len && text[p] == '\r') {
+        p++;
+        if (p < len && text[p] == '\n') {
+            p++;
+        }
+    } else if (p < len) {
+        p++;
+    }
+    *pos = p;
+}
+
+mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, size_t cap, size_t *n,
+                         mt_wpl_error_t *err, mt_wpl_warnings_t *warn)
+{
+    static const char bom[] = "\xEF\xBB\xBF";
     size_t pos = 0u;
     uint32_t line = 0u;
-    int header_seen = 0;
+    uint32_t header_line = 0u;
+    uint32_t prev_seq = 0u;
 
     *n = 0u;
     set_err(err, MT_OK, 0u, 0u, MT_MISSION_NONE, "ok");
+    if (len >= sizeof bom - 1u && memcmp(text, bom, sizeof bom - 1u) == 0) {
+        pos = sizeof bom - 1u; /* UTF-8 byte order mark */
+    }
     while (pos < len) {
-        size_t start = pos;
+        size_t start;
         size_t end;
         size_t p;
         char tok[WPL_FIELDS][WPL_TOKEN_MAX];
@@ -103,16 +152,16 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
         mt_wpl_item_t it;
         uint32_t f;
 
-        while (pos < len && text[pos] != '\n') {
-            pos++;
-        }
-        end = pos;
-        if (pos < len) {
-            pos++; /* the newline */
-        }
+        next_line(text, len, &pos, &start, &end);
         line++;
-        /* tokenise the line [start, end) */
         p = start;
+        while (p < end && is_space(text[p])) {
+            p++;
+        }
+        if (p < end && text[p] == '#') {
+            continue; /* comment */
+        }
+        /* tokenise the line [start, end) */
         for (;;) {
             size_t k = 0u;
             while (p < end && is_space(text[p])) {
@@ -125,7 +174,7 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
                 set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE, "NUL byte in the file");
                 return MT_E_MISSION_SYNTAX;
             }
-            if (!header_seen) {
+            if (header_line == 0u) {
                 break; /* the header is checked as a whole below */
             }
             if (nt >= WPL_FIELDS) {
@@ -148,8 +197,8 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
             tok[nt][k] = '\0';
             nt++;
         }
-        if (!header_seen) {
-            /* first non-blank line: the header */
+        if (header_line == 0u) {
+            /* first non-blank line that is not a comment: the header */
             size_t a = start;
             size_t b = end;
             static const char hdr[] = "QGC WPL 110";
@@ -167,7 +216,7 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
                         "missing header: expected \"QGC WPL 110\"");
                 return MT_E_MISSION_SYNTAX;
             }
-            header_seen = 1;
+            header_line = line;
             continue;
         }
         if (nt == 0u) {
@@ -183,11 +232,6 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
         if (!parse_uint(tok[0], 0xFFFFFFFFu, &it.seq)) {
             set_err(err, MT_E_MISSION_SYNTAX, line, 1u, MT_MISSION_NONE, "seq: not an unsigned integer: '%s'",
                     tok[0]);
-            return MT_E_MISSION_SYNTAX;
-        }
-        if (it.seq != (uint32_t)*n) {
-            set_err(err, MT_E_MISSION_SYNTAX, line, 1u, MT_MISSION_NONE, "seq: expected %u, found %u",
-                    (unsigned)*n, (unsigned)it.seq);
             return MT_E_MISSION_SYNTAX;
         }
         if (!parse_uint(tok[1], 1u, &it.current)) {
@@ -220,19 +264,35 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
             set_err(err, MT_E_MISSION_SIZE, line, 0u, (uint32_t)*n, "more than %u items", (unsigned)cap);
             return MT_E_MISSION_SIZE;
         }
+        /* items are numbered in file order (mavwp.py renumbers silently; this says so) */
+        if (*n == 0u ? it.seq != 0u : it.seq != prev_seq + 1u) {
+            mt_wpl_warn(warn, line, 1u, (uint32_t)*n,
+                        "seq: %u where %u was expected; renumbered to %u (jump targets use the new numbers)",
+                        (unsigned)it.seq, *n == 0u ? 0u : (unsigned)(prev_seq + 1u), (unsigned)*n);
+        }
+        prev_seq = it.seq;
+        it.seq = (uint32_t)*n;
+        if (*n == 0u && it.command == 0u) {
+            mt_wpl_warn(warn, line, 4u, 0u, "home: command 0 (Mission Planner) read as WAYPOINT (16)");
+            it.command = MT_MAV_CMD_WAYPOINT;
+        }
         items[*n] = it;
         (*n)++;
     }
-    if (!header_seen) {
+    if (header_line == 0u) {
         set_err(err, MT_E_MISSION_SYNTAX, line == 0u ? 1u : line, 0u, MT_MISSION_NONE,
                 "empty file: expected \"QGC WPL 110\"");
         return MT_E_MISSION_SYNTAX;
     }
+    if (*n == 0u) {
+        set_err(err, MT_E_MISSION_SIZE, header_line, 0u, 0u,
+                "no items after the header: a mission needs at least the home entry (index 0)");
+        return MT_E_MISSION_SIZE;
+    }
     return MT_OK;
 }
 
-/* Shortest %.*g rendering that reads back to exactly v. */
-static void fmt_double(char *buf, size_t cap, double v)
+void mt_wpl_fmt_double(char *buf, size_t cap, double v)
 {
     int prec;
 
@@ -242,6 +302,10 @@ static void fmt_double(char *buf, size_t cap, double v)
     }
     if (isinf(v)) {
         snprintf(buf, cap, v < 0 ? "-inf" : "inf");
+        return;
+    }
+    if (v == floor(v) && fabs(v) < 1e15) {
+        snprintf(buf, cap, "%.0f", v); /* an integer: 20, not 2e+01 (exact below 2^53) */
         return;
     }
     for (prec = 1; prec <= 17; prec++) {
@@ -272,7 +336,7 @@ size_t mt_wpl_write(const mt_wpl_item_t *items, size_t n, char *out, size_t cap)
         char num[7][40];
         int f;
         for (f = 0; f < 7; f++) {
-            fmt_double(num[f], sizeof num[f], it->p[f]);
+            mt_wpl_fmt_double(num[f], sizeof num[f], it->p[f]);
         }
         EMIT("%u\t%u\t%u\t%u\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%u\n", (unsigned)i, (unsigned)it->current,
              (unsigned)it->frame, (unsigned)it->command, num[0], num[1], num[2], num[3], num[4], num[5],
@@ -280,6 +344,37 @@ size_t mt_wpl_write(const mt_wpl_item_t *items, size_t n, char *out, size_t cap)
     }
 #undef EMIT
     return used;
+}
+
+/* Do commands that carry a location (the kernel's F_LOC do commands; ArduPilot's
+ * AP_Mission::stored_in_location): their frame matters. */
+static const uint32_t k_do_with_location[] = {179u, 188u, 189u, 191u, 195u, 201u};
+
+int mt_wpl_frame_ignored(uint32_t command)
+{
+    size_t i;
+    uint8_t kind;
+
+    if (command > 0xFFFFu) {
+        return 0;
+    }
+    kind = mt_mission_kind_of((uint16_t)command);
+    if (kind != MT_MISSION_KIND_DO && kind != MT_MISSION_KIND_JUMP && kind != MT_MISSION_KIND_TAG) {
+        return 0; /* nav commands, home, unknown ids */
+    }
+    for (i = 0u; i < sizeof k_do_with_location / sizeof k_do_with_location[0]; i++) {
+        if (k_do_with_location[i] == command) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Frames the kernel accepts for some command (mission.c frame_ok). */
+static int frame_known(uint32_t frame)
+{
+    return frame == 0u || frame == 2u || frame == 3u || frame == 5u || frame == 6u || frame == 10u ||
+           frame == 11u;
 }
 
 /* round(v * scale) into int32, if finite and in range. */
@@ -317,7 +412,8 @@ mt_status_t mt_wpl_to_cmd(const mt_wpl_item_t *it, mt_mission_cmd_t *out, mt_wpl
         return MT_E_MISSION_FRAME;
     }
     out->id = (uint16_t)it->command;
-    out->frame = (uint8_t)it->frame;
+    /* a frame ArduPilot ignores is given to the kernel as MISSION (see wpl.h) */
+    out->frame = (mt_wpl_frame_ignored(it->command) && !frame_known(it->frame)) ? 2u : (uint8_t)it->frame;
     out->options = (uint8_t)(it->autocontinue & 1u);
     for (f = 0; f < 4; f++) {
         if (isnan(it->p[f])) {

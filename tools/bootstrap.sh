@@ -77,7 +77,7 @@ first_line() {
 }
 
 # ---------------------------------------------------------------------------------------------
-# test: host compilers, GoogleTest, valgrind, clang sanitizers
+# test: host compilers, GoogleTest, valgrind, clang sanitizers, cJSON (mission .plan files)
 # ---------------------------------------------------------------------------------------------
 sanitizer_links() {
     local dir="$1" san="$2"
@@ -86,7 +86,7 @@ sanitizer_links() {
 }
 
 do_test() {
-    apt_ensure gcc g++ make clang clang-14 libgtest-dev googletest valgrind python3-pytest
+    apt_ensure gcc g++ make clang clang-14 libgtest-dev googletest valgrind python3-pytest libcjson-dev
     local tmp
     tmp="$(mktemp -d)"
     # Debian 12's clang-14 does not depend on the sanitizer runtimes: add them on demand.
@@ -97,12 +97,14 @@ do_test() {
     sanitizer_links "$tmp" address,undefined || { cat "$tmp/log" >&2; die "clang -fsanitize=address,undefined does not link"; }
     rm -rf "$tmp"
     [ -f /usr/include/gtest/gtest.h ] || die "gtest/gtest.h missing"
+    [ -f /usr/include/cjson/cJSON.h ] || die "cjson/cJSON.h missing (libcjson-dev)"
     record gcc "$(first_line gcc --version)"
     record g++ "$(first_line g++ --version)"
     record clang "$(first_line clang --version)"
     record make "$(first_line make --version)"
     record googletest "googletest $(pkg_version googletest)"
     record valgrind "$(first_line valgrind --version)"
+    record cjson "libcjson-dev $(pkg_version libcjson-dev)"
 }
 
 # ---------------------------------------------------------------------------------------------

@@ -33,7 +33,7 @@ $(1): $(VEH_SRC) $(VEH_SITL_SRC) $(VEH_HDR) $(4)/libmt.a $(4)/libmt_posix.a \
       $(4)/libmt_mission_host.a
 	@mkdir -p $$(@D)
 	$(2) $(VEH_WARN) $(3) $(5) $(VEH_INC) $(VEH_SRC) $(VEH_SITL_SRC) \
-	    $(4)/libmt_mission_host.a $(4)/libmt_posix.a $(4)/libmt.a -pthread -lm -o $$@
+	    $(4)/libmt_mission_host.a $(4)/libmt_posix.a $(4)/libmt.a -lcjson -pthread -lm -o $$@
 endef
 $(eval $(call veh_sitl,$(BUILD)/sitl/metronome-sitl,gcc,-O2 -g,$(BUILD)/gcc,))
 $(eval $(call veh_sitl,$(BUILD)/sitl-asan/metronome-sitl,clang,$(SAN_ASAN) -fsanitize=undefined \

@@ -22,7 +22,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char *text;
     mt_wpl_error_t e;
 
-    if (mt_wpl_parse((const char *)data, size, a, CAP, &na, &e) != MT_OK) {
+    if (mt_wpl_parse((const char *)data, size, a, CAP, &na, &e, NULL) != MT_OK) {
         return 0;
     }
     need = mt_wpl_write(a, na, NULL, 0u) + 1u;
@@ -31,7 +31,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     mt_wpl_write(a, na, text, need);
-    if (mt_wpl_parse(text, need - 1u, b, CAP, &nb, &e) != MT_OK || nb != na) {
+    if (mt_wpl_parse(text, need - 1u, b, CAP, &nb, &e, NULL) != MT_OK || nb != na) {
         abort();
     }
     for (i = 0u; i < na; i++) {

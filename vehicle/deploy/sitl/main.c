@@ -3,7 +3,7 @@
  * @file main.c
  * @brief SITL: the vehicle on the host port (hal_posix) in the simulated world.
  *
- *   metronome-sitl [options] [MISSION.waypoints]
+ *   metronome-sitl [options] [MISSION.waypoints | MISSION.plan]
  *     --builtin          fly the firmware's built-in mission instead of a file
  *     --realtime         wall-clock time on real threads (timer thread 1 kHz, IO
  *                        thread, work-queue thread, main loop on the port's metronome)
@@ -315,7 +315,8 @@ static char *slurp(const char *path, size_t *len)
     return buf;
 }
 
-/* Read and validate a mission file. Returns the number of commands (0: rejected, with the
+/* Read and validate a mission file (QGC WPL 110 or QGroundControl .plan: by the extension, else
+ * by the content). Returns the number of commands (0: rejected, with the
  * reasons printed), -1 on an I/O error. */
 static int load_file(const char *path, mt_mission_cmd_t *cmds, veh_home_t *home)
 {
@@ -325,6 +326,8 @@ static int load_file(const char *path, mt_mission_cmd_t *cmds, veh_home_t *home)
     mt_plan_step_t plan[1];
     mt_wpl_item_t *items = calloc(MT_CFG_MISSION_MAX_CMDS, sizeof(*items));
     mt_wpl_error_t e;
+    mt_mfile_format_t fmt;
+    mt_status_t st;
     size_t n = 0u;
     size_t i;
     int result = 0;
@@ -336,11 +339,24 @@ static int load_file(const char *path, mt_mission_cmd_t *cmds, veh_home_t *home)
         free(items);
         return -1;
     }
-    if (mt_report_check(text, len, plan, 1u, rep) != MT_OK) {
+    fmt = mt_mfile_format_of_path(path);
+    st = mt_report_check_as(fmt, text, len, plan, 1u, rep);
+    for (i = 0u; i < rep->warnings.n; i++) {
+        const mt_wpl_error_t *w = &rep->warnings.w[i];
+        printf("mission file warning: %s:", path);
+        if (w->line != 0u) {
+            printf("%u:", (unsigned)w->line);
+        }
+        printf(" %s\n", w->reason);
+    }
+    if (st != MT_OK) {
         printf("mission file rejected: %s\n", path);
         for (i = 0u; i < rep->nerr; i++) {
             const mt_wpl_error_t *x = &rep->errors[i];
-            printf("  %s:%u:", path, (unsigned)x->line);
+            printf("  %s:", path);
+            if (x->line != 0u) {
+                printf("%u:", (unsigned)x->line);
+            }
             if (x->field != 0u) {
                 printf(" field %u:", (unsigned)x->field);
             }
@@ -349,7 +365,7 @@ static int load_file(const char *path, mt_mission_cmd_t *cmds, veh_home_t *home)
             }
             printf(" %s (%s)\n", x->reason, mt_status_str(x->st));
         }
-    } else if (mt_wpl_parse(text, len, items, MT_CFG_MISSION_MAX_CMDS, &n, &e) == MT_OK) {
+    } else if (mt_mfile_parse(fmt, text, len, items, MT_CFG_MISSION_MAX_CMDS, &n, &e, NULL) == MT_OK) {
         result = (int)n;
         for (i = 0u; i < n; i++) {
             if (mt_wpl_to_cmd(&items[i], &cmds[i], &e) != MT_OK) {
@@ -380,7 +396,7 @@ static int usage(void)
             "                      [--log FILE] [--event T:stop|resume|land]...\n"
             "                      [--overrun TASK:US[:START[:DURATION]]] [--wind N,E] [--quiet]\n"
             "                      [--trace FILE]\n"
-            "                      [MISSION.waypoints]\n");
+            "                      [MISSION.waypoints | MISSION.plan]\n");
     return 2;
 }
 
