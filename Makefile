@@ -47,6 +47,8 @@ help:
 	@echo "  make cbmc | cbmc-<function> | cbmc-max | cbmc-test"
 	@echo "  make tla | tla-deep | tla-trace | tla-trace-mission | tla-update"
 	@echo "  make chibios-prove   WP and CBMC of the ChibiOS port's time arithmetic"
+	@echo "  make check-<module>  one module: its tests, WP, CBMC, TLC and traces (ring objring sem"
+	@echo "                       proc sched time status bus wq mission; proofs/check.mk)"
 	@echo "Vehicle, firmware, performance"
 	@echo "  make sitl [MISSION=vehicle/missions/<file>.waypoints] [SITL_ARGS=...]   fly the example"
 	@echo "  make sched-check     Z3: is the vehicle's task table (vehicle/tasks.def) schedulable?"

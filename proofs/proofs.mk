@@ -261,3 +261,4 @@ wp-clean:
 
 # CBMC harnesses generated from the ACSL contracts (tools/acsl2cbmc.py), when present.
 -include proofs/cbmc/cbmc.mk
+-include proofs/check.mk

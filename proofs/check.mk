@@ -1,0 +1,80 @@
+# SPDX-License-Identifier: Apache-2.0
+# proofs/check.mk -- make check-<module>: everything about one kernel module, included by
+# proofs/proofs.mk (paths relative to the root). In order, each must pass:
+#   1. its googletest suites (build/gcc/mt_tests, CHECK_TEST_<m> as the gtest filter)
+#   2. Frama-C WP on the module from source, the smoke canary, and the WP gate on that module
+#   3. its CBMC harnesses (proofs/cbmc/proofs/<function>/, CHECK_CBMC_<m>: name prefixes)
+#   4. TLC on the CI configurations of its model (tla/models.json "module" = CHECK_TLA_<m>)
+#   5. its trace validation (tools/trace/run_traces.py --only CHECK_TRACE_<m>)
+# Results go to $(BUILD)/check/<module>/. `make prove` remains the run of record: this target is
+# for working on one module. The table in README.md ("Modules") lists the same mapping.
+
+CHECK_MODULES := ring objring sem proc sched time status bus wq mission
+
+CHECK_TEST_ring    := ByteRing*
+CHECK_TEST_objring := ObjRing*
+CHECK_TEST_sem     := Sem*
+CHECK_TEST_proc    := Proc*
+CHECK_TEST_sched   := Sched*
+CHECK_TEST_time    := TimeExt*:TimeTicksToUs*
+CHECK_TEST_status  := Status*
+CHECK_TEST_bus     := Bus*
+CHECK_TEST_wq      := Wq*
+CHECK_TEST_mission := Mission.*:MissionCheck.*:MissionState.*:MissionStatus.*
+
+CHECK_CBMC_ring    := mt_bring_
+CHECK_CBMC_objring := mt_oring_
+CHECK_CBMC_sem     := mt_sem_
+CHECK_CBMC_proc    := mt_proc_
+CHECK_CBMC_sched   := mt_sched_
+CHECK_CBMC_time    := mt_time_
+CHECK_CBMC_status  := mt_status_
+CHECK_CBMC_bus     := mt_topic_ mt_sub_
+CHECK_CBMC_wq      := mt_wq_ mt_work_
+CHECK_CBMC_mission := mt_mission_
+
+# SpscRing models both rings (its configurations name the byte or the object ring).
+CHECK_TLA_ring     := SpscRing
+CHECK_TLA_objring  := SpscRing
+CHECK_TLA_sem      := BinSem
+CHECK_TLA_proc     := ProcReg
+CHECK_TLA_sched    := TickSched
+CHECK_TLA_bus      := TopicBus
+CHECK_TLA_wq       := WorkQueueMC
+CHECK_TLA_mission  := MissionSeqMC
+
+# The ring traces run both rings.
+CHECK_TRACE_ring    := ring
+CHECK_TRACE_objring := ring
+CHECK_TRACE_sem     := sem
+CHECK_TRACE_mission := mission
+
+check_comma := ,
+check_harnesses = $(foreach p,$(CHECK_CBMC_$(1)),$(filter $(p)%,$(CBMC_PROOF_NAMES)))
+check_models = python3 -c 'import json; print(" ".join(m["name"] for m in \
+    json.load(open("tla/models.json"))["models"] if m["module"] == "$(1)" and not m["deep"]))'
+
+.PHONY: $(addprefix check-,$(CHECK_MODULES))
+
+$(addprefix check-,$(CHECK_MODULES)): check-%: deps-test deps-prove
+	@rm -rf $(BUILD)/check/$* && mkdir -p $(BUILD)/check/$*
+	@echo "== check-$*: googletest ($(CHECK_TEST_$*))"
+	@$(MAKE) --no-print-directory $(BUILD)/gcc/mt_tests >/dev/null
+	@n=$$($(BUILD)/gcc/mt_tests --gtest_list_tests --gtest_filter='$(CHECK_TEST_$*)' | grep -c '^  '); \
+	[ "$$n" -gt 0 ] || { echo "check-$*: no test matches $(CHECK_TEST_$*)"; exit 1; }
+	@$(BUILD)/gcc/mt_tests --gtest_brief=1 --gtest_filter='$(CHECK_TEST_$*)'
+	@echo "== check-$*: WP"
+	@$(MAKE) --no-print-directory -j$(WP_JOBS) wp-$* wp-canary
+	@set -o pipefail; python3 proofs/wp/gate.py --wp-dir $(WP_DIR) --modules $* --quiet \
+	    --summary $(BUILD)/check/$*/wp-summary.json | tail -n 4
+	@echo "== check-$*: CBMC ($(words $(call check_harnesses,$*)) harnesses)"
+	@set -o pipefail; python3 proofs/cbmc/run.py -j $(CBMC_JOBS) --summary $(BUILD)/check/$*/cbmc-summary.json \
+	    $(call check_harnesses,$*) | tail -n 1
+	@set -o pipefail; $(if $(CHECK_TLA_$*),echo "== check-$*: TLC ($(CHECK_TLA_$*))" && \
+	    python3 tla/run_tlc.py --jar $(TLA_JAR) --out $(BUILD)/check/$*/tla \
+	        --only $$($(call check_models,$(CHECK_TLA_$*))) | tail -n 1,true)
+	@set -o pipefail; $(if $(CHECK_TRACE_$*),echo "== check-$*: traces ($(CHECK_TRACE_$*))" && \
+	    python3 tools/trace/run_traces.py --only $(CHECK_TRACE_$*) --jar $(TLA_JAR) \
+	        --out $(BUILD)/check/$*/trace | tail -n 1,true)
+	@echo "check-$*: passed (tests, WP, CBMC$(if $(CHECK_TLA_$*),$(check_comma) TLC)$(if \
+	    $(CHECK_TRACE_$*),$(check_comma) traces))"
