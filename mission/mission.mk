@@ -40,7 +40,7 @@ $(BUILD)/mt-mission: tools/mission/main.c $(BUILD)/gcc/libmt_mission_host.a $(BU
 
 # $(call mission_test_bin,NAME,CXX,FLAGS)
 define mission_test_bin
-$(BUILD)/$(1)/mt_mission_tests: $(MISSION_TEST_SRC) tests/mission_test_util.h $(BUILD)/$(1)/libmt.a \
+$(BUILD)/$(1)/mt_mission_tests: $(MISSION_TEST_SRC) tests/mission_test_util.h tests/mission_file_test_util.h $(BUILD)/$(1)/libmt.a \
                                 $(BUILD)/$(1)/libmt_mission_host.a
 	$(2) $(WARN_CXX) $(3) $(KERNEL_INC) -Itests -Imission $(MISSION_TEST_SRC) \
 	    $(BUILD)/$(1)/libmt_mission_host.a $(BUILD)/$(1)/libmt.a $(MISSION_LIBS) -lgtest -lgtest_main -pthread \

@@ -7,7 +7,6 @@
 
 #include <cjson/cJSON.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,25 +16,6 @@
 #define PLAN_FIELD_COMMAND 4u
 #define PLAN_FIELD_PARAM1 5u
 #define PLAN_FIELD_AUTOCONTINUE 12u
-
-static void plan_err(mt_wpl_error_t *err, mt_status_t st, uint32_t line, uint32_t field, uint32_t index,
-                     const char *fmt, ...) __attribute__((format(printf, 6, 7)));
-static void plan_err(mt_wpl_error_t *err, mt_status_t st, uint32_t line, uint32_t field, uint32_t index,
-                     const char *fmt, ...)
-{
-    va_list ap;
-
-    if (err == NULL) {
-        return;
-    }
-    err->st = st;
-    err->line = line;
-    err->field = field;
-    err->index = index;
-    va_start(ap, fmt);
-    vsnprintf(err->reason, sizeof err->reason, fmt, ap);
-    va_end(ap);
-}
 
 /* 1-based line and column of text[off]. */
 static uint32_t line_of(const char *text, size_t off, uint32_t *col)
@@ -117,21 +97,23 @@ static mt_status_t read_simple(const cJSON *obj, size_t k, mt_wpl_item_t *it, do
     it->seq = idx;
     v = cJSON_GetObjectItemCaseSensitive(obj, "command");
     if (!get_uint(v, 4294967295.0, &it->command)) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_COMMAND, idx,
-                 "mission.items[%u].command: %s", (unsigned)k, v == NULL ? "missing" : "not an unsigned integer");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_COMMAND, idx,
+                         "mission.items[%u].command: %s", (unsigned)k,
+                         v == NULL ? "missing" : "not an unsigned integer");
         return MT_E_MISSION_SYNTAX;
     }
     v = cJSON_GetObjectItemCaseSensitive(obj, "frame");
     if (!get_uint(v, 4294967295.0, &it->frame)) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_FRAME, idx, "mission.items[%u].frame: %s",
-                 (unsigned)k, v == NULL ? "missing" : "not an unsigned integer");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_FRAME, idx,
+                         "mission.items[%u].frame: %s", (unsigned)k,
+                         v == NULL ? "missing" : "not an unsigned integer");
         return MT_E_MISSION_SYNTAX;
     }
     p = cJSON_GetObjectItemCaseSensitive(obj, "params");
     if (!cJSON_IsArray(p) || cJSON_GetArraySize(p) != 7) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_PARAM1, idx,
-                 "mission.items[%u].params: %s", (unsigned)k,
-                 p == NULL ? "missing" : "not an array of 7 numbers (null for NaN)");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_PARAM1, idx,
+                         "mission.items[%u].params: %s", (unsigned)k,
+                         p == NULL ? "missing" : "not an array of 7 numbers (null for NaN)");
         return MT_E_MISSION_SYNTAX;
     }
     f = 0u;
@@ -141,16 +123,17 @@ static mt_status_t read_simple(const cJSON *obj, size_t k, mt_wpl_item_t *it, do
         } else if (cJSON_IsNumber(v) && isfinite(v->valuedouble)) {
             it->p[f] = v->valuedouble;
         } else {
-            plan_err(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_PARAM1 + f, idx,
-                     "mission.items[%u].params[%u]: %s", (unsigned)k, (unsigned)f,
-                     cJSON_IsNumber(v) ? "out of range" : "not a number or null");
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_PARAM1 + f, idx,
+                             "mission.items[%u].params[%u]: %s", (unsigned)k, (unsigned)f,
+                             cJSON_IsNumber(v) ? "out of range" : "not a number or null");
             return MT_E_MISSION_SYNTAX;
         }
     }
     v = cJSON_GetObjectItemCaseSensitive(obj, "autoContinue");
     if (!cJSON_IsBool(v)) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_AUTOCONTINUE, idx,
-                 "mission.items[%u].autoContinue: %s", (unsigned)k, v == NULL ? "missing" : "not true or false");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_AUTOCONTINUE, idx,
+                         "mission.items[%u].autoContinue: %s", (unsigned)k,
+                         v == NULL ? "missing" : "not true or false");
         return MT_E_MISSION_SYNTAX;
     }
     it->autocontinue = cJSON_IsTrue(v) ? 1u : 0u;
@@ -159,8 +142,8 @@ static mt_status_t read_simple(const cJSON *obj, size_t k, mt_wpl_item_t *it, do
     if (v != NULL) {
         uint32_t id = 0u;
         if (!get_uint(v, 4294967295.0, &id)) {
-            plan_err(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_JUMP_ID, idx,
-                     "mission.items[%u].doJumpId: not an unsigned integer", (unsigned)k);
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, PLAN_FIELD_JUMP_ID, idx,
+                             "mission.items[%u].doJumpId: not an unsigned integer", (unsigned)k);
             return MT_E_MISSION_SYNTAX;
         }
         *jump_id = (double)id;
@@ -183,17 +166,19 @@ static mt_status_t fix_jumps(mt_wpl_item_t *items, size_t n, const double *jump_
         }
         want = items[i].p[0];
         if (!isfinite(want) || want < 0.0 || want > 4294967295.0) {
-            plan_err(err, MT_E_MISSION_JUMP, 0u, PLAN_FIELD_PARAM1, (uint32_t)i,
-                     "mission.items[%u].params[0]: DO_JUMP target is not a doJumpId", (unsigned)(i - 1u));
+            mt_wpl_set_error(err, MT_E_MISSION_JUMP, 0u, PLAN_FIELD_PARAM1, (uint32_t)i,
+                             "mission.items[%u].params[0]: DO_JUMP target is not a doJumpId",
+                             (unsigned)(i - 1u));
             return MT_E_MISSION_JUMP;
         }
         want = trunc(want); /* QGC: static_cast<int>(param1) */
         for (j = 1u; j < n && jump_id[j] != want; j++) {
         }
         if (j == n) {
-            plan_err(err, MT_E_MISSION_JUMP, 0u, PLAN_FIELD_PARAM1, (uint32_t)i,
-                     "mission.items[%u].params[0]: DO_JUMP to doJumpId %.0f: no item has it", (unsigned)(i - 1u),
-                     want);
+            mt_wpl_set_error(
+                err, MT_E_MISSION_JUMP, 0u, PLAN_FIELD_PARAM1, (uint32_t)i,
+                "mission.items[%u].params[0]: DO_JUMP to doJumpId %.0f: no item has it",
+                (unsigned)(i - 1u), want);
             return MT_E_MISSION_JUMP;
         }
         if (items[i].p[0] != (double)j) {
@@ -220,49 +205,52 @@ static mt_status_t read_mission(const cJSON *root, mt_wpl_item_t *items, size_t 
     mt_status_t st = MT_OK;
 
     if (!cJSON_IsObject(root)) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 1u, 0u, MT_MISSION_NONE, "the top level is not a JSON object");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 1u, 0u, MT_MISSION_NONE,
+                         "the top level is not a JSON object");
         return MT_E_MISSION_SYNTAX;
     }
     v = cJSON_GetObjectItemCaseSensitive(root, "fileType");
     if (!cJSON_IsString(v) || strcmp(v->valuestring, "Plan") != 0) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "fileType: %s",
-                 v == NULL ? "missing (a .plan has \"fileType\": \"Plan\")" : "not \"Plan\"");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "fileType: %s",
+                         v == NULL ? "missing (a .plan has \"fileType\": \"Plan\")"
+                                   : "not \"Plan\"");
         return MT_E_MISSION_SYNTAX;
     }
     v = cJSON_GetObjectItemCaseSensitive(root, "version");
     if (!cJSON_IsNumber(v) || v->valuedouble != 1.0) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "version: %s",
-                 v == NULL ? "missing" : "not 1 (the only .plan version)");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "version: %s",
+                         v == NULL ? "missing" : "not 1 (the only .plan version)");
         return MT_E_MISSION_SYNTAX;
     }
     mission = cJSON_GetObjectItemCaseSensitive(root, "mission");
     if (!cJSON_IsObject(mission)) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "mission: %s",
-                 mission == NULL ? "missing" : "not an object");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "mission: %s",
+                         mission == NULL ? "missing" : "not an object");
         return MT_E_MISSION_SYNTAX;
     }
     v = cJSON_GetObjectItemCaseSensitive(mission, "version");
     if (!cJSON_IsNumber(v) || v->valuedouble != 2.0) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "mission.version: %s",
-                 v == NULL ? "missing" : "not 2 (QGC's mission format 2 is read)");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "mission.version: %s",
+                         v == NULL ? "missing" : "not 2 (QGC's mission format 2 is read)");
         return MT_E_MISSION_SYNTAX;
     }
     home = cJSON_GetObjectItemCaseSensitive(mission, "plannedHomePosition");
     if (!cJSON_IsArray(home) || cJSON_GetArraySize(home) != 3) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, 0u, 0u, "mission.plannedHomePosition: %s",
-                 home == NULL ? "missing" : "not [latitude, longitude, altitude]");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, 0u, 0u, "mission.plannedHomePosition: %s",
+                         home == NULL ? "missing" : "not [latitude, longitude, altitude]");
         return MT_E_MISSION_SYNTAX;
     }
     list = cJSON_GetObjectItemCaseSensitive(mission, "items");
     if (!cJSON_IsArray(list)) {
-        plan_err(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "mission.items: %s",
-                 list == NULL ? "missing" : "not an array");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, 0u, MT_MISSION_NONE, "mission.items: %s",
+                         list == NULL ? "missing" : "not an array");
         return MT_E_MISSION_SYNTAX;
     }
     count = (size_t)cJSON_GetArraySize(list);
     if (cap == 0u || count > cap - 1u) {
-        plan_err(err, MT_E_MISSION_SIZE, 0u, 0u, MT_MISSION_NONE,
-                 "mission.items: %u items and the home are more than %u", (unsigned)count, (unsigned)cap);
+        mt_wpl_set_error(err, MT_E_MISSION_SIZE, 0u, 0u, MT_MISSION_NONE,
+                         "mission.items: %u items and the home are more than %u", (unsigned)count,
+                         (unsigned)cap);
         return MT_E_MISSION_SIZE;
     }
     /* item 0: the planned home */
@@ -273,15 +261,15 @@ static mt_status_t read_mission(const cJSON *root, mt_wpl_item_t *items, size_t 
     k = 0u;
     for (x = home->child; x != NULL; x = x->next, k++) {
         if (!cJSON_IsNumber(x) || !isfinite(x->valuedouble)) {
-            plan_err(err, MT_E_MISSION_SYNTAX, 0u, 9u + (uint32_t)k, 0u,
-                     "mission.plannedHomePosition[%u]: not a number", (unsigned)k);
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, 9u + (uint32_t)k, 0u,
+                             "mission.plannedHomePosition[%u]: not a number", (unsigned)k);
             return MT_E_MISSION_SYNTAX;
         }
         items[0].p[4u + k] = x->valuedouble;
     }
     jump_id = calloc(count + 1u, sizeof *jump_id);
     if (jump_id == NULL) {
-        plan_err(err, MT_E_FULL, 0u, 0u, MT_MISSION_NONE, "out of memory");
+        mt_wpl_set_error(err, MT_E_FULL, 0u, 0u, MT_MISSION_NONE, "out of memory");
         return MT_E_FULL;
     }
     jump_id[0] = -1.0; /* the home is no jump target */
@@ -290,19 +278,21 @@ static mt_status_t read_mission(const cJSON *root, mt_wpl_item_t *items, size_t 
         const cJSON *type = cJSON_GetObjectItemCaseSensitive(x, "type");
         const uint32_t idx = (uint32_t)(k + 1u);
         if (!cJSON_IsObject(x) || !cJSON_IsString(type)) {
-            plan_err(err, MT_E_MISSION_SYNTAX, 0u, 0u, idx, "mission.items[%u]: %s", (unsigned)k,
-                     cJSON_IsObject(x) ? "no \"type\"" : "not an object");
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, 0u, 0u, idx, "mission.items[%u]: %s",
+                             (unsigned)k, cJSON_IsObject(x) ? "no \"type\"" : "not an object");
             st = MT_E_MISSION_SYNTAX;
         } else if (strcmp(type->valuestring, "ComplexItem") == 0) {
             const cJSON *ct = cJSON_GetObjectItemCaseSensitive(x, "complexItemType");
-            plan_err(err, MT_E_MISSION_CMD, 0u, 0u, idx,
-                     "mission.items[%u]: complex item \"%.24s\" refused: QGC makes its waypoints only on upload",
-                     (unsigned)k, cJSON_IsString(ct) ? ct->valuestring : "?");
+            mt_wpl_set_error(err, MT_E_MISSION_CMD, 0u, 0u, idx,
+                             "mission.items[%u]: complex item \"%.24s\" refused: QGC makes its "
+                             "waypoints only on upload",
+                             (unsigned)k, cJSON_IsString(ct) ? ct->valuestring : "?");
             st = MT_E_MISSION_CMD;
         } else if (strcmp(type->valuestring, "SimpleItem") != 0) {
-            plan_err(err, MT_E_MISSION_SYNTAX, 0u, 0u, idx,
-                     "mission.items[%u].type: \"%.24s\" is neither SimpleItem nor ComplexItem", (unsigned)k,
-                     type->valuestring);
+            mt_wpl_set_error(
+                err, MT_E_MISSION_SYNTAX, 0u, 0u, idx,
+                "mission.items[%u].type: \"%.24s\" is neither SimpleItem nor ComplexItem",
+                (unsigned)k, type->valuestring);
             st = MT_E_MISSION_SYNTAX;
         } else {
             st = read_simple(x, k, &items[idx], &jump_id[idx], err);
@@ -350,10 +340,10 @@ mt_status_t mt_plan_parse(const char *text, size_t len, mt_wpl_item_t *items, si
     mt_status_t st;
 
     *n = 0u;
-    plan_err(err, MT_OK, 0u, 0u, MT_MISSION_NONE, "ok");
+    mt_wpl_set_error(err, MT_OK, 0u, 0u, MT_MISSION_NONE, "ok");
     if (len > MT_PLAN_MAX_BYTES) {
-        plan_err(err, MT_E_MISSION_SIZE, 1u, 0u, MT_MISSION_NONE, "larger than %u bytes",
-                 (unsigned)MT_PLAN_MAX_BYTES);
+        mt_wpl_set_error(err, MT_E_MISSION_SIZE, 1u, 0u, MT_MISSION_NONE, "larger than %u bytes",
+                         (unsigned)MT_PLAN_MAX_BYTES);
         return MT_E_MISSION_SIZE;
     }
     if (len >= sizeof bom - 1u && memcmp(text, bom, sizeof bom - 1u) == 0) {
@@ -362,13 +352,13 @@ mt_status_t mt_plan_parse(const char *text, size_t len, mt_wpl_item_t *items, si
     nul = memchr(text, '\0', len);
     if (nul != NULL) {
         line = line_of(text, (size_t)(nul - text), &col);
-        plan_err(err, MT_E_MISSION_SYNTAX, line, 0u, MT_MISSION_NONE, "NUL byte in the file (column %u)",
-                 (unsigned)col);
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 0u, MT_MISSION_NONE,
+                         "NUL byte in the file (column %u)", (unsigned)col);
         return MT_E_MISSION_SYNTAX;
     }
     if (count_values(text, len) > MT_PLAN_MAX_VALUES) {
-        plan_err(err, MT_E_MISSION_SIZE, 1u, 0u, MT_MISSION_NONE, "more than %u JSON values",
-                 (unsigned)MT_PLAN_MAX_VALUES);
+        mt_wpl_set_error(err, MT_E_MISSION_SIZE, 1u, 0u, MT_MISSION_NONE,
+                         "more than %u JSON values", (unsigned)MT_PLAN_MAX_VALUES);
         return MT_E_MISSION_SIZE;
     }
     root = cJSON_ParseWithLengthOpts(text + skip, len - skip, &end, 0);
@@ -378,8 +368,8 @@ mt_status_t mt_plan_parse(const char *text, size_t len, mt_wpl_item_t *items, si
         }
         if (end < text + len) {
             line = line_of(text, (size_t)(end - text), &col);
-            plan_err(err, MT_E_MISSION_SYNTAX, line, 0u, MT_MISSION_NONE,
-                     "JSON: text after the top-level value (column %u)", (unsigned)col);
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 0u, MT_MISSION_NONE,
+                             "JSON: text after the top-level value (column %u)", (unsigned)col);
             cJSON_Delete(root);
             return MT_E_MISSION_SYNTAX;
         }
@@ -395,11 +385,12 @@ mt_status_t mt_plan_parse(const char *text, size_t len, mt_wpl_item_t *items, si
             off = len;
         }
         line = line_of(text, off, &col);
-        plan_err(err, MT_E_MISSION_SYNTAX, line, 0u, MT_MISSION_NONE, "JSON: %s (column %u)",
-                 off >= len           ? "unexpected end of the file"
-                 : off + 1u >= len    ? "syntax error or end of the file at the last character"
-                                      : "syntax error",
-                 (unsigned)col);
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 0u, MT_MISSION_NONE,
+                         "JSON: %s (column %u)",
+                         off >= len        ? "unexpected end of the file"
+                         : off + 1u >= len ? "syntax error or end of the file at the last character"
+                                           : "syntax error",
+                         (unsigned)col);
         return MT_E_MISSION_SYNTAX;
     }
     st = read_mission(root, items, cap, n, err, warn);
@@ -451,18 +442,19 @@ mt_status_t mt_plan_write(const mt_wpl_item_t *items, size_t n, char **out, size
 
     *out = NULL;
     *len = 0u;
-    plan_err(err, MT_OK, 0u, 0u, MT_MISSION_NONE, "ok");
+    mt_wpl_set_error(err, MT_OK, 0u, 0u, MT_MISSION_NONE, "ok");
     if (n == 0u) {
-        plan_err(err, MT_E_MISSION_SIZE, 0u, 0u, 0u, "no items: a .plan needs the home (index 0)");
+        mt_wpl_set_error(err, MT_E_MISSION_SIZE, 0u, 0u, 0u,
+                         "no items: a .plan needs the home (index 0)");
         return MT_E_MISSION_SIZE;
     }
     for (i = 0u; i < n; i++) {
         int f;
         for (f = (i == 0u ? 4 : 0); f < 7; f++) {
             if (isinf(items[i].p[f]) || (i == 0u && isnan(items[i].p[f]))) {
-                plan_err(err, MT_E_MISSION_PARAM, items[i].line, 5u + (uint32_t)f, (uint32_t)i,
-                         "param %d: %s (a .plan cannot hold it)", f + 1,
-                         isnan(items[i].p[f]) ? "NaN in the home position" : "infinite");
+                mt_wpl_set_error(err, MT_E_MISSION_PARAM, items[i].line, 5u + (uint32_t)f,
+                                 (uint32_t)i, "param %d: %s (a .plan cannot hold it)", f + 1,
+                                 isnan(items[i].p[f]) ? "NaN in the home position" : "infinite");
                 return MT_E_MISSION_PARAM;
             }
         }
@@ -480,7 +472,7 @@ mt_status_t mt_plan_write(const mt_wpl_item_t *items, size_t n, char **out, size
         cJSON_Delete(home);
         cJSON_Delete(fence);
         cJSON_Delete(rally);
-        plan_err(err, MT_E_FULL, 0u, 0u, MT_MISSION_NONE, "out of memory");
+        mt_wpl_set_error(err, MT_E_FULL, 0u, 0u, MT_MISSION_NONE, "out of memory");
         return MT_E_FULL;
     }
     /* keys in QGC's (alphabetical) order */
@@ -532,7 +524,7 @@ mt_status_t mt_plan_write(const mt_wpl_item_t *items, size_t n, char **out, size
     }
     cJSON_Delete(root);
     if (*out == NULL) {
-        plan_err(err, MT_E_FULL, 0u, 0u, MT_MISSION_NONE, "out of memory");
+        mt_wpl_set_error(err, MT_E_FULL, 0u, 0u, MT_MISSION_NONE, "out of memory");
         return MT_E_FULL;
     }
     *len = strlen(*out);

@@ -331,20 +331,12 @@ static const char *cmd_label(uint16_t id)
     return n != NULL ? n : "?";
 }
 
-/* "file:line: field F: index I:" (line 0: no line, e.g. a .plan item) */
+/* "file:line: field F: index I:" (mt_wpl_where) */
 static void put_where(buf_t *b, const char *file, const mt_wpl_error_t *e)
 {
-    if (e->line != 0u) {
-        put(b, "%s:%u:", file, (unsigned)e->line);
-    } else {
-        put(b, "%s:", file);
-    }
-    if (e->field != 0u) {
-        put(b, " field %u:", (unsigned)e->field);
-    }
-    if (e->index != MT_MISSION_NONE) {
-        put(b, " index %u:", (unsigned)e->index);
-    }
+    char where[MT_WPL_WHERE_MAX];
+
+    put(b, "%s", mt_wpl_where(where, sizeof where, file, e));
 }
 
 static const char *trunc_reason(int t)

@@ -14,22 +14,29 @@
 #define WPL_FIELDS 12u
 #define WPL_TOKEN_MAX 64u
 
-static void set_err(mt_wpl_error_t *err, mt_status_t st, uint32_t line, uint32_t field, uint32_t index,
-                    const char *fmt, ...) __attribute__((format(printf, 6, 7)));
-static void set_err(mt_wpl_error_t *err, mt_status_t st, uint32_t line, uint32_t field, uint32_t index,
-                    const char *fmt, ...)
+/* Fill one error or warning record. */
+static void fill(mt_wpl_error_t *e, mt_status_t st, uint32_t line, uint32_t field, uint32_t index,
+                 const char *fmt, va_list ap) __attribute__((format(printf, 6, 0)));
+static void fill(mt_wpl_error_t *e, mt_status_t st, uint32_t line, uint32_t field, uint32_t index,
+                 const char *fmt, va_list ap)
+{
+    e->st = st;
+    e->line = line;
+    e->field = field;
+    e->index = index;
+    vsnprintf(e->reason, sizeof e->reason, fmt, ap);
+}
+
+void mt_wpl_set_error(mt_wpl_error_t *err, mt_status_t st, uint32_t line, uint32_t field,
+                      uint32_t index, const char *fmt, ...)
 {
     va_list ap;
 
     if (err == NULL) {
         return;
     }
-    err->st = st;
-    err->line = line;
-    err->field = field;
-    err->index = index;
     va_start(ap, fmt);
-    vsnprintf(err->reason, sizeof err->reason, fmt, ap);
+    fill(err, st, line, field, index, fmt, ap);
     va_end(ap);
 }
 
@@ -85,6 +92,22 @@ static int parse_double(const char *tok, double *out)
     return 1;
 }
 
+const char *mt_wpl_where(char *buf, size_t cap, const char *file, const mt_wpl_error_t *e)
+{
+    int k = (e->line != 0u) ? snprintf(buf, cap, "%s:%u:", file, (unsigned)e->line)
+                            : snprintf(buf, cap, "%s:", file);
+    size_t n = (k < 0) ? 0u : (size_t)k;
+
+    if (e->field != 0u && n < cap) {
+        k = snprintf(buf + n, cap - n, " field %u:", (unsigned)e->field);
+        n += (k < 0) ? 0u : (size_t)k;
+    }
+    if (e->index != MT_MISSION_NONE && n < cap) {
+        (void)snprintf(buf + n, cap - n, " index %u:", (unsigned)e->index);
+    }
+    return buf;
+}
+
 void mt_wpl_warn(mt_wpl_warnings_t *warn, uint32_t line, uint32_t field, uint32_t index, const char *fmt, ...)
 {
     va_list ap;
@@ -98,12 +121,8 @@ void mt_wpl_warn(mt_wpl_warnings_t *warn, uint32_t line, uint32_t field, uint32_
         return;
     }
     w = &warn->w[warn->n++];
-    w->st = MT_OK;
-    w->line = line;
-    w->field = field;
-    w->index = index;
     va_start(ap, fmt);
-    vsnprintf(w->reason, sizeof w->reason, fmt, ap);
+    fill(w, MT_OK, line, field, index, fmt, ap);
     va_end(ap);
 }
 
@@ -139,7 +158,7 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
     uint32_t prev_seq = 0u;
 
     *n = 0u;
-    set_err(err, MT_OK, 0u, 0u, MT_MISSION_NONE, "ok");
+    mt_wpl_set_error(err, MT_OK, 0u, 0u, MT_MISSION_NONE, "ok");
     if (len >= sizeof bom - 1u && memcmp(text, bom, sizeof bom - 1u) == 0) {
         pos = sizeof bom - 1u; /* UTF-8 byte order mark */
     }
@@ -171,25 +190,27 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
                 break;
             }
             if (text[p] == '\0') {
-                set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE, "NUL byte in the file");
+                mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE,
+                                 "NUL byte in the file");
                 return MT_E_MISSION_SYNTAX;
             }
             if (header_line == 0u) {
                 break; /* the header is checked as a whole below */
             }
             if (nt >= WPL_FIELDS) {
-                set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE,
-                        "more than %u fields", (unsigned)WPL_FIELDS);
+                mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE,
+                                 "more than %u fields", (unsigned)WPL_FIELDS);
                 return MT_E_MISSION_SYNTAX;
             }
             while (p < end && !is_space(text[p])) {
                 if (text[p] == '\0') {
-                    set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE, "NUL byte in the file");
+                    mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE,
+                                     "NUL byte in the file");
                     return MT_E_MISSION_SYNTAX;
                 }
                 if (k + 1u >= WPL_TOKEN_MAX) {
-                    set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE, "%s: field too long",
-                            k_field_names[nt]);
+                    mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE,
+                                     "%s: field too long", k_field_names[nt]);
                     return MT_E_MISSION_SYNTAX;
                 }
                 tok[nt][k++] = text[p++];
@@ -212,8 +233,8 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
                 continue; /* blank line before the header */
             }
             if ((b - a) != sizeof hdr - 1u || memcmp(text + a, hdr, sizeof hdr - 1u) != 0) {
-                set_err(err, MT_E_MISSION_SYNTAX, line, 0u, MT_MISSION_NONE,
-                        "missing header: expected \"QGC WPL 110\"");
+                mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 0u, MT_MISSION_NONE,
+                                 "missing header: expected \"QGC WPL 110\"");
                 return MT_E_MISSION_SYNTAX;
             }
             header_line = line;
@@ -223,45 +244,48 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
             continue; /* blank line */
         }
         if (nt < WPL_FIELDS) {
-            set_err(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE,
-                    "%s: missing (a line has 12 fields, found %u)", k_field_names[nt], (unsigned)nt);
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, nt + 1u, MT_MISSION_NONE,
+                             "%s: missing (a line has 12 fields, found %u)", k_field_names[nt],
+                             (unsigned)nt);
             return MT_E_MISSION_SYNTAX;
         }
         memset(&it, 0, sizeof it);
         it.line = line;
         if (!parse_uint(tok[0], 0xFFFFFFFFu, &it.seq)) {
-            set_err(err, MT_E_MISSION_SYNTAX, line, 1u, MT_MISSION_NONE, "seq: not an unsigned integer: '%s'",
-                    tok[0]);
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 1u, MT_MISSION_NONE,
+                             "seq: not an unsigned integer: '%s'", tok[0]);
             return MT_E_MISSION_SYNTAX;
         }
         if (!parse_uint(tok[1], 1u, &it.current)) {
-            set_err(err, MT_E_MISSION_SYNTAX, line, 2u, (uint32_t)*n, "current: not 0 or 1: '%s'", tok[1]);
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 2u, (uint32_t)*n,
+                             "current: not 0 or 1: '%s'", tok[1]);
             return MT_E_MISSION_SYNTAX;
         }
         if (!parse_uint(tok[2], 0xFFFFFFFFu, &it.frame)) {
-            set_err(err, MT_E_MISSION_SYNTAX, line, 3u, (uint32_t)*n, "frame: not an unsigned integer: '%s'",
-                    tok[2]);
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 3u, (uint32_t)*n,
+                             "frame: not an unsigned integer: '%s'", tok[2]);
             return MT_E_MISSION_SYNTAX;
         }
         if (!parse_uint(tok[3], 0xFFFFFFFFu, &it.command)) {
-            set_err(err, MT_E_MISSION_SYNTAX, line, 4u, (uint32_t)*n,
-                    "command: not an unsigned integer: '%s'", tok[3]);
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 4u, (uint32_t)*n,
+                             "command: not an unsigned integer: '%s'", tok[3]);
             return MT_E_MISSION_SYNTAX;
         }
         for (f = 0u; f < 7u; f++) {
             if (!parse_double(tok[4u + f], &it.p[f])) {
-                set_err(err, MT_E_MISSION_SYNTAX, line, 5u + f, (uint32_t)*n, "%s: not a number: '%s'",
-                        k_field_names[4u + f], tok[4u + f]);
+                mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 5u + f, (uint32_t)*n,
+                                 "%s: not a number: '%s'", k_field_names[4u + f], tok[4u + f]);
                 return MT_E_MISSION_SYNTAX;
             }
         }
         if (!parse_uint(tok[11], 1u, &it.autocontinue)) {
-            set_err(err, MT_E_MISSION_SYNTAX, line, 12u, (uint32_t)*n, "autocontinue: not 0 or 1: '%s'",
-                    tok[11]);
+            mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line, 12u, (uint32_t)*n,
+                             "autocontinue: not 0 or 1: '%s'", tok[11]);
             return MT_E_MISSION_SYNTAX;
         }
         if (*n >= cap) {
-            set_err(err, MT_E_MISSION_SIZE, line, 0u, (uint32_t)*n, "more than %u items", (unsigned)cap);
+            mt_wpl_set_error(err, MT_E_MISSION_SIZE, line, 0u, (uint32_t)*n, "more than %u items",
+                             (unsigned)cap);
             return MT_E_MISSION_SIZE;
         }
         /* items are numbered in file order (mavwp.py renumbers silently; this says so) */
@@ -280,13 +304,14 @@ mt_status_t mt_wpl_parse(const char *text, size_t len, mt_wpl_item_t *items, siz
         (*n)++;
     }
     if (header_line == 0u) {
-        set_err(err, MT_E_MISSION_SYNTAX, line == 0u ? 1u : line, 0u, MT_MISSION_NONE,
-                "empty file: expected \"QGC WPL 110\"");
+        mt_wpl_set_error(err, MT_E_MISSION_SYNTAX, line == 0u ? 1u : line, 0u, MT_MISSION_NONE,
+                         "empty file: expected \"QGC WPL 110\"");
         return MT_E_MISSION_SYNTAX;
     }
     if (*n == 0u) {
-        set_err(err, MT_E_MISSION_SIZE, header_line, 0u, 0u,
-                "no items after the header: a mission needs at least the home entry (index 0)");
+        mt_wpl_set_error(
+            err, MT_E_MISSION_SIZE, header_line, 0u, 0u,
+            "no items after the header: a mission needs at least the home entry (index 0)");
         return MT_E_MISSION_SIZE;
     }
     return MT_OK;
@@ -402,13 +427,13 @@ mt_status_t mt_wpl_to_cmd(const mt_wpl_item_t *it, mt_mission_cmd_t *out, mt_wpl
 
     memset(out, 0, sizeof *out);
     if (it->command > 0xFFFFu) {
-        set_err(err, MT_E_MISSION_CMD, it->line, 4u, idx, "command: %u is not a MAV_CMD number",
-                (unsigned)it->command);
+        mt_wpl_set_error(err, MT_E_MISSION_CMD, it->line, 4u, idx,
+                         "command: %u is not a MAV_CMD number", (unsigned)it->command);
         return MT_E_MISSION_CMD;
     }
     if (it->frame > 0xFFu) {
-        set_err(err, MT_E_MISSION_FRAME, it->line, 3u, idx, "frame: %u is not a MAV_FRAME number",
-                (unsigned)it->frame);
+        mt_wpl_set_error(err, MT_E_MISSION_FRAME, it->line, 3u, idx,
+                         "frame: %u is not a MAV_FRAME number", (unsigned)it->frame);
         return MT_E_MISSION_FRAME;
     }
     out->id = (uint16_t)it->command;
@@ -422,9 +447,9 @@ mt_status_t mt_wpl_to_cmd(const mt_wpl_item_t *it, mt_mission_cmd_t *out, mt_wpl
         }
         if (!to_fixed(it->p[f], (double)MT_MISSION_MILLI, 2147483647.0, &out->param[f]) ||
             out->param[f] == MT_MISSION_PARAM_NAN) {
-            set_err(err, MT_E_MISSION_PARAM, it->line, 5u + (uint32_t)f, idx,
-                    "%s: %s (limit: finite, |v| < 2147483.647)", names[f],
-                    isinf(it->p[f]) ? "infinite" : "out of range");
+            mt_wpl_set_error(err, MT_E_MISSION_PARAM, it->line, 5u + (uint32_t)f, idx,
+                             "%s: %s (limit: finite, |v| < 2147483.647)", names[f],
+                             isinf(it->p[f]) ? "infinite" : "out of range");
             return MT_E_MISSION_PARAM;
         }
     }
@@ -432,8 +457,11 @@ mt_status_t mt_wpl_to_cmd(const mt_wpl_item_t *it, mt_mission_cmd_t *out, mt_wpl
         int32_t v = 0;
         double scale = (f < 6) ? 1e7 : 100.0;
         if (isnan(it->p[f]) || !to_fixed(it->p[f], scale, 2147483647.0, &v)) {
-            set_err(err, MT_E_MISSION_PARAM, it->line, 5u + (uint32_t)f, idx, "%s: %s", names[f],
-                    isnan(it->p[f]) ? "NaN is not allowed" : isinf(it->p[f]) ? "infinite" : "out of range");
+            mt_wpl_set_error(err, MT_E_MISSION_PARAM, it->line, 5u + (uint32_t)f, idx, "%s: %s",
+                             names[f],
+                             isnan(it->p[f])   ? "NaN is not allowed"
+                             : isinf(it->p[f]) ? "infinite"
+                                               : "out of range");
             return MT_E_MISSION_PARAM;
         }
         if (f == 4) {

@@ -79,6 +79,17 @@ typedef struct {
     mt_wpl_error_t w[MT_WPL_MAX_WARNINGS];
 } mt_wpl_warnings_t;
 
+/** Set *err (NULL: ignored): status, line, field, item index and the formatted reason. */
+void mt_wpl_set_error(mt_wpl_error_t *err, mt_status_t st, uint32_t line, uint32_t field,
+                      uint32_t index, const char *fmt, ...) __attribute__((format(printf, 6, 7)));
+
+/** Room for mt_wpl_where's text with a path of up to 4000 bytes. */
+#define MT_WPL_WHERE_MAX 4096u
+
+/** "file:line: field F: index I:" for e into buf[0 .. cap-1], each part only when set (line 0:
+ *  no line, e.g. a .plan item); returns buf. */
+const char *mt_wpl_where(char *buf, size_t cap, const char *file, const mt_wpl_error_t *e);
+
 /** Add a warning to warn (NULL: ignored). */
 void mt_wpl_warn(mt_wpl_warnings_t *warn, uint32_t line, uint32_t field, uint32_t index, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));

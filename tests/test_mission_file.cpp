@@ -10,41 +10,16 @@
 #include <string>
 #include <vector>
 
+#include "mission_file_test_util.h"
 #include "report.h"
 #include "wpl.h"
-
-#ifndef MT_MISSIONS_DIR
-#define MT_MISSIONS_DIR "tests/missions"
-#endif
 
 namespace
 {
 
-std::string ReadFile(const std::string &name)
-{
-    std::ifstream f(std::string(MT_MISSIONS_DIR) + "/" + name, std::ios::binary);
-    EXPECT_TRUE(f.good()) << name;
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-struct Parsed {
-    mt_status_t st;
-    std::vector<mt_wpl_item_t> items;
-    mt_wpl_error_t err;
-    mt_wpl_warnings_t warn;
-};
-
-Parsed Parse(const std::string &text)
-{
-    Parsed p{};
-    p.items.resize(MT_CFG_MISSION_MAX_CMDS);
-    size_t n = 0;
-    p.st = mt_wpl_parse(text.data(), text.size(), p.items.data(), p.items.size(), &n, &p.err, &p.warn);
-    p.items.resize(n);
-    return p;
-}
+using mt_test::FileRead;
+using mt_test::ParseWpl;
+using mt_test::ReadMissionFile;
 
 std::string Write(const std::vector<mt_wpl_item_t> &items)
 {
@@ -104,11 +79,11 @@ const char *const kValidFiles[] = {
 TEST(MissionFile, EveryValidFileRoundTripsExactly)
 {
     for (const char *name : kValidFiles) {
-        Parsed a = Parse(ReadFile(name));
+        FileRead a = ParseWpl(ReadMissionFile(name));
         ASSERT_EQ(a.st, MT_OK) << name << ": " << a.err.reason;
         ASSERT_GE(a.items.size(), 2u) << name;
         std::string w1 = Write(a.items);
-        Parsed b = Parse(w1);
+        FileRead b = ParseWpl(w1);
         ASSERT_EQ(b.st, MT_OK) << name;
         ASSERT_EQ(a.items.size(), b.items.size()) << name;
         for (size_t i = 0; i < a.items.size(); i++) {
@@ -133,7 +108,7 @@ TEST(MissionFile, RoundTripKeepsAwkwardValues)
     it.p[5] = 149.98765432109876;
     it.p[6] = 1e308;
     std::vector<mt_wpl_item_t> v{it};
-    Parsed b = Parse(Write(v));
+    FileRead b = ParseWpl(Write(v));
     ASSERT_EQ(b.st, MT_OK);
     ASSERT_EQ(b.items.size(), 1u);
     EXPECT_TRUE(SameItem(it, b.items[0]));
@@ -142,7 +117,7 @@ TEST(MissionFile, RoundTripKeepsAwkwardValues)
 
 TEST(MissionFile, AcceptsCrlfSpacesAndBlankLines)
 {
-    Parsed p = Parse("\r\nQGC WPL 110\r\n0 1 0 16 0 0 0 0 -35.3 149.1 584 1\r\n\r\n"
+    FileRead p = ParseWpl("\r\nQGC WPL 110\r\n0 1 0 16 0 0 0 0 -35.3 149.1 584 1\r\n\r\n"
                      "1  0  3  22  0 0 0 0 0 0 20 1\n");
     ASSERT_EQ(p.st, MT_OK) << p.err.reason;
     EXPECT_EQ(p.items.size(), 2u);
@@ -192,7 +167,7 @@ TEST(MissionFile, MalformedTextGivesLineFieldAndReason)
          MT_E_MISSION_SYNTAX, 3, 6, "missing"},
     };
     for (const BadText &c : cases) {
-        Parsed p = Parse(c.text);
+        FileRead p = ParseWpl(c.text);
         EXPECT_EQ(p.st, c.st) << c.what;
         EXPECT_EQ(p.err.st, c.st) << c.what;
         EXPECT_EQ(p.err.line, c.line) << c.what;
@@ -208,7 +183,7 @@ TEST(MissionFile, TooManyItems)
     for (unsigned i = 0; i <= MT_CFG_MISSION_MAX_CMDS; i++) {
         t += std::to_string(i) + " 0 3 16 0 0 0 0 0 0 0 1\n";
     }
-    Parsed p = Parse(t);
+    FileRead p = ParseWpl(t);
     EXPECT_EQ(p.st, MT_E_MISSION_SIZE);
     EXPECT_EQ(p.err.line, MT_CFG_MISSION_MAX_CMDS + 2u);
 }
@@ -257,7 +232,7 @@ TEST(MissionFile, ConversionRules)
 
 TEST(MissionPlan, PlainWaypoints)
 {
-    Plan p = Check(ReadFile("plain.waypoints"));
+    Plan p = Check(ReadMissionFile("plain.waypoints"));
     EXPECT_EQ(p.st, MT_OK);
     EXPECT_TRUE(p.rep.valid);
     EXPECT_EQ(p.Seq(), "n1 n2 n3 n4 n5");
@@ -266,13 +241,13 @@ TEST(MissionPlan, PlainWaypoints)
 
 TEST(MissionPlan, NestedJumpsUnrolled)
 {
-    Plan p = Check(ReadFile("nested_jumps.waypoints"));
+    Plan p = Check(ReadMissionFile("nested_jumps.waypoints"));
     EXPECT_EQ(p.Seq(), "n1 n2 n3 n2 n3 n2 n3 n5 n2 n3 n2 n3 n2 n3 n5 n7");
 }
 
 TEST(MissionPlan, RepeatForeverIsTruncated)
 {
-    Plan p = Check(ReadFile("repeat_forever.waypoints"), 10);
+    Plan p = Check(ReadMissionFile("repeat_forever.waypoints"), 10);
     EXPECT_TRUE(p.rep.valid);
     EXPECT_EQ(p.rep.truncated, (int)MT_REPORT_FOREVER);
     EXPECT_EQ(p.Seq(), "n1 n2 n4 d3 n2 n4 d3 n2 n4 d3");
@@ -280,25 +255,25 @@ TEST(MissionPlan, RepeatForeverIsTruncated)
 
 TEST(MissionPlan, JumpTags)
 {
-    Plan p = Check(ReadFile("jump_tags.waypoints"));
+    Plan p = Check(ReadMissionFile("jump_tags.waypoints"));
     EXPECT_EQ(p.Seq(), "n1 n3 n4 n3 n4 n7");
 }
 
 TEST(MissionPlan, DoOnlyStretchesRunAfterThePreviousNav)
 {
-    Plan p = Check(ReadFile("do_only_stretches.waypoints"));
+    Plan p = Check(ReadMissionFile("do_only_stretches.waypoints"));
     EXPECT_EQ(p.Seq(), "n3 d1 d2 n7 d4 d5 d6 n9 d8");
 }
 
 TEST(MissionPlan, Conditions)
 {
-    Plan p = Check(ReadFile("conditions.waypoints"));
+    Plan p = Check(ReadMissionFile("conditions.waypoints"));
     EXPECT_EQ(p.Seq(), "n1 n5 d2 d3 d4 n8 d6 d7 n9");
 }
 
 TEST(MissionPlan, LandAndRtl)
 {
-    Plan p = Check(ReadFile("land_rtl.waypoints"));
+    Plan p = Check(ReadMissionFile("land_rtl.waypoints"));
     EXPECT_EQ(p.Seq(), "n1 n2 n3 n5 d4 n6");
 }
 
@@ -322,7 +297,7 @@ TEST(MissionPlan, InvalidFilesAreReportedWithLineAndIndex)
         {"bad/unknown_tag.waypoints", MT_E_MISSION_JUMP, 4, 2},
     };
     for (const BadFile &c : cases) {
-        Plan p = Check(ReadFile(c.name));
+        Plan p = Check(ReadMissionFile(c.name));
         EXPECT_EQ(p.st, c.st) << c.name;
         EXPECT_FALSE(p.rep.valid) << c.name;
         ASSERT_GE(p.rep.nerr, 1u) << c.name;
@@ -331,7 +306,7 @@ TEST(MissionPlan, InvalidFilesAreReportedWithLineAndIndex)
         EXPECT_TRUE(p.steps.empty()) << c.name;
     }
     // every problem of a file is listed, not just the first
-    Plan v = Check(ReadFile("bad/values.waypoints"));
+    Plan v = Check(ReadMissionFile("bad/values.waypoints"));
     ASSERT_EQ(v.rep.nerr, 4u);
     EXPECT_EQ(v.rep.errors[1].st, MT_E_MISSION_PARAM);
     EXPECT_EQ(v.rep.errors[2].st, MT_E_MISSION_LOCATION);
@@ -340,7 +315,7 @@ TEST(MissionPlan, InvalidFilesAreReportedWithLineAndIndex)
 
 TEST(MissionPlan, JsonShape)
 {
-    Plan p = Check(ReadFile("repeat_forever.waypoints"), 3);
+    Plan p = Check(ReadMissionFile("repeat_forever.waypoints"), 3);
     std::string j(mt_report_json(&p.rep, nullptr, 0) + 1, '\0');
     mt_report_json(&p.rep, &j[0], j.size());
     EXPECT_EQ(
@@ -385,7 +360,7 @@ std::string Json(const mt_report_t &rep)
 
 TEST(MissionFileCompat, CommentLinesAreSkipped)
 {
-    Parsed p = Parse("# saved by MAVProxy\nQGC WPL 110\n# home\n" + kHome +
+    FileRead p = ParseWpl("# saved by MAVProxy\nQGC WPL 110\n# home\n" + kHome +
                      "\n  \t# indented comment 1 0 3 16\n1 0 3 22 0 0 0 0 0 0 15 1\n#\n");
     ASSERT_EQ(p.st, MT_OK) << p.err.reason;
     ASSERT_EQ(p.items.size(), 2u);
@@ -398,12 +373,12 @@ TEST(MissionFileCompat, CommentLinesAreSkipped)
 
 TEST(MissionFileCompat, Utf8BomIsAccepted)
 {
-    Parsed p = Parse("\xEF\xBB\xBFQGC WPL 110\n" + kHome + "\n");
+    FileRead p = ParseWpl("\xEF\xBB\xBFQGC WPL 110\n" + kHome + "\n");
     ASSERT_EQ(p.st, MT_OK) << p.err.reason;
     ASSERT_EQ(p.items.size(), 1u);
     EXPECT_EQ(p.items[0].p[4], -35.363262);
     // only at the very start: a BOM in the middle of a line is not a number
-    Parsed q = Parse("QGC WPL 110\n0 1 0 16 \xEF\xBB\xBF" "0 0 0 0 0 0 0 1\n");
+    FileRead q = ParseWpl("QGC WPL 110\n0 1 0 16 \xEF\xBB\xBF" "0 0 0 0 0 0 0 1\n");
     EXPECT_EQ(q.st, MT_E_MISSION_SYNTAX);
     EXPECT_EQ(q.err.field, 5u);
 }
@@ -422,9 +397,9 @@ TEST(MissionFileCompat, CrOnlyCrlfAndLfLineEndsReadAlike)
     for (char c : lf) {
         crlf += (c == '\n') ? std::string("\r\n") : std::string(1, c);
     }
-    Parsed a = Parse(lf);
-    Parsed b = Parse(cr);
-    Parsed c = Parse(crlf);
+    FileRead a = ParseWpl(lf);
+    FileRead b = ParseWpl(cr);
+    FileRead c = ParseWpl(crlf);
     ASSERT_EQ(a.st, MT_OK);
     ASSERT_EQ(b.st, MT_OK) << b.err.reason;
     ASSERT_EQ(c.st, MT_OK) << c.err.reason;
@@ -445,10 +420,10 @@ TEST(MissionFileCompat, CommittedBomCrlfAndCrOnlyFilesMatchTheirLfText)
     const std::string lf = "QGC WPL 110\n0\t1\t0\t16\t0.000000\t0.000000\t0.000000\t0.000000\t-35.363262\t"
                            "149.165237\t584.090000\t1\n1 0 3 22 0 0 0 0 0 0 15 1\n"
                            "2 0 3 16 0 0 0 0 -35.361908 149.163399 30 1\n3 0 3 21 0 0 0 0 0 0 0 1\n";
-    Parsed want = Parse(lf);
+    FileRead want = ParseWpl(lf);
     ASSERT_EQ(want.st, MT_OK);
     for (const char *name : {"comments_bom_crlf.waypoints", "cr_only.waypoints"}) {
-        Parsed got = Parse(ReadFile(name));
+        FileRead got = ParseWpl(ReadMissionFile(name));
         ASSERT_EQ(got.st, MT_OK) << name << ": " << got.err.reason;
         ASSERT_EQ(got.items.size(), 4u) << name;
         for (size_t i = 0; i < 4; i++) {
@@ -456,12 +431,12 @@ TEST(MissionFileCompat, CommittedBomCrlfAndCrOnlyFilesMatchTheirLfText)
         }
         EXPECT_EQ(got.warn.n, 0u) << name;
     }
-    EXPECT_EQ(Parse(ReadFile("comments_bom_crlf.waypoints")).items[3].line, 9u);
+    EXPECT_EQ(ParseWpl(ReadMissionFile("comments_bom_crlf.waypoints")).items[3].line, 9u);
 }
 
 TEST(MissionFileCompat, SeqGapIsRenumberedWithAWarning)
 {
-    Parsed p = Parse("QGC WPL 110\n" + kHome + "\n2 0 3 22 0 0 0 0 0 0 15 1\n3 0 3 21 0 0 0 0 0 0 0 1\n");
+    FileRead p = ParseWpl("QGC WPL 110\n" + kHome + "\n2 0 3 22 0 0 0 0 0 0 15 1\n3 0 3 21 0 0 0 0 0 0 0 1\n");
     ASSERT_EQ(p.st, MT_OK) << p.err.reason;
     ASSERT_EQ(p.items.size(), 3u);
     EXPECT_EQ(p.items[1].seq, 1u);
@@ -473,13 +448,13 @@ TEST(MissionFileCompat, SeqGapIsRenumberedWithAWarning)
     EXPECT_EQ(p.warn.w[0].index, 1u);
     EXPECT_STREQ(p.warn.w[0].reason, "seq: 2 where 1 was expected; renumbered to 1 (jump targets use the new numbers)");
     // out of order: 0 2 1 -> two discontinuities
-    Parsed q = Parse("QGC WPL 110\n" + kHome + "\n2 0 3 22 0 0 0 0 0 0 15 1\n1 0 3 21 0 0 0 0 0 0 0 1\n");
+    FileRead q = ParseWpl("QGC WPL 110\n" + kHome + "\n2 0 3 22 0 0 0 0 0 0 15 1\n1 0 3 21 0 0 0 0 0 0 0 1\n");
     ASSERT_EQ(q.st, MT_OK);
     EXPECT_EQ(q.items[2].command, 21u);
     EXPECT_EQ(q.items[2].seq, 2u);
     EXPECT_EQ(q.warn.n, 2u);
     // the committed fixture: valid, with the warning in the report
-    Plan c = Check(ReadFile("warn/seq_gap.waypoints"));
+    Plan c = Check(ReadMissionFile("warn/seq_gap.waypoints"));
     EXPECT_EQ(c.st, MT_OK);
     EXPECT_TRUE(c.rep.valid);
     ASSERT_EQ(c.rep.warnings.n, 1u);
@@ -493,7 +468,7 @@ TEST(MissionFileCompat, WarningsBeyondTheListAreCounted)
     for (unsigned i = 1; i <= 40; i++) {
         t += std::to_string(2 * i) + " 0 3 16 0 0 0 0 0 0 0 1\n"; // every seq jumps
     }
-    Parsed p = Parse(t);
+    FileRead p = ParseWpl(t);
     ASSERT_EQ(p.st, MT_OK);
     EXPECT_EQ(p.items.size(), 41u);
     EXPECT_EQ(p.warn.n, (size_t)MT_WPL_MAX_WARNINGS);
@@ -502,14 +477,14 @@ TEST(MissionFileCompat, WarningsBeyondTheListAreCounted)
 
 TEST(MissionFileCompat, MissionPlannerHomeWithCommandZero)
 {
-    Parsed p = Parse(ReadFile("warn/mission_planner_home.waypoints"));
+    FileRead p = ParseWpl(ReadMissionFile("warn/mission_planner_home.waypoints"));
     ASSERT_EQ(p.st, MT_OK) << p.err.reason;
     EXPECT_EQ(p.items[0].command, 16u);
     ASSERT_EQ(p.warn.n, 1u);
     EXPECT_EQ(p.warn.w[0].line, 3u);
     EXPECT_EQ(p.warn.w[0].field, 4u);
     EXPECT_EQ(p.warn.w[0].index, 0u);
-    Plan c = Check(ReadFile("warn/mission_planner_home.waypoints"));
+    Plan c = Check(ReadMissionFile("warn/mission_planner_home.waypoints"));
     EXPECT_TRUE(c.rep.valid);
     EXPECT_EQ(c.Seq(), "n1 n2 n3");
     // only the home: command 0 later is an unknown command
@@ -539,7 +514,7 @@ TEST(MissionFileCompat, DoCommandInFrameOneIsAccepted)
     ASSERT_EQ(mt_wpl_to_cmd(&it, &c, &e), MT_OK);
     EXPECT_EQ(c.frame, 3u);
 
-    Plan p = Check(ReadFile("warn/do_frame1.waypoints"));
+    Plan p = Check(ReadMissionFile("warn/do_frame1.waypoints"));
     EXPECT_EQ(p.st, MT_OK);
     EXPECT_TRUE(p.rep.valid);
     EXPECT_EQ(p.Seq(), "n1 n3 d2 n5 d4");
@@ -560,7 +535,7 @@ TEST(MissionFileCompat, DoCommandInFrameOneIsAccepted)
 
 TEST(MissionFileCompat, HeaderOnlyFileReportsTheHeaderLine)
 {
-    Plan p = Check(ReadFile("bad/header_only.waypoints"));
+    Plan p = Check(ReadMissionFile("bad/header_only.waypoints"));
     EXPECT_EQ(p.st, MT_E_MISSION_SIZE);
     EXPECT_FALSE(p.rep.valid);
     ASSERT_EQ(p.rep.nerr, 1u);
@@ -572,7 +547,7 @@ TEST(MissionFileCompat, HeaderOnlyFileReportsTheHeaderLine)
 
 TEST(MissionFileCompat, WarningsAreListedInJsonAndText)
 {
-    Plan p = Check(ReadFile("warn/mission_planner_home.waypoints"));
+    Plan p = Check(ReadMissionFile("warn/mission_planner_home.waypoints"));
     const std::string j = Json(p.rep);
     EXPECT_NE(j.find("\"errors\": [], \"warnings\": [{\"line\": 3, \"field\": 4, \"index\": 0, \"reason\": "
                      "\"home: command 0 (Mission Planner) read as WAYPOINT (16)\"}], \"warnings_not_shown\": 0"),
@@ -589,7 +564,7 @@ TEST(MissionFileCompat, WarningsAreListedInJsonAndText)
 TEST(MissionPlanTruncation, SaysWhy)
 {
     // repeats forever: the sequencer comes back to a state it was in
-    Plan f = Check(ReadFile("repeat_forever.waypoints"), 10);
+    Plan f = Check(ReadMissionFile("repeat_forever.waypoints"), 10);
     EXPECT_EQ(f.rep.truncated, (int)MT_REPORT_FOREVER);
     EXPECT_EQ(f.rep.plan_total, 0u);
     EXPECT_NE(Text(f.rep, "f").find("  ... truncated after 10 steps: the mission repeats forever\n"),
@@ -597,7 +572,7 @@ TEST(MissionPlanTruncation, SaysWhy)
     EXPECT_NE(Json(f.rep).find("\"truncated\": true, \"truncated_reason\": \"repeats forever\""),
               std::string::npos);
     // finite, 16 steps, limit 5: longer than the limit, not "forever"
-    Plan l = Check(ReadFile("nested_jumps.waypoints"), 5);
+    Plan l = Check(ReadMissionFile("nested_jumps.waypoints"), 5);
     EXPECT_TRUE(l.rep.valid);
     EXPECT_EQ(l.rep.truncated, (int)MT_REPORT_OVER_LIMIT);
     EXPECT_EQ(l.rep.plan_total, 16u);
@@ -611,7 +586,7 @@ TEST(MissionPlanTruncation, SaysWhy)
               std::string::npos)
         << Json(l.rep);
     // exactly at the limit: complete
-    Plan e = Check(ReadFile("nested_jumps.waypoints"), 16);
+    Plan e = Check(ReadMissionFile("nested_jumps.waypoints"), 16);
     EXPECT_EQ(e.rep.truncated, (int)MT_REPORT_COMPLETE);
     EXPECT_EQ(e.rep.plan_total, 16u);
     // finite but far too long to run out (30000 x 30000 laps): over the limit, length unknown

@@ -14,52 +14,18 @@
 #include <vector>
 
 #include "mfile.h"
+#include "mission_file_test_util.h"
 #include "plan.h"
 #include "report.h"
 #include "wpl.h"
 
-#ifndef MT_MISSIONS_DIR
-#define MT_MISSIONS_DIR "tests/missions"
-#endif
-
 namespace
 {
 
-std::string ReadMission(const std::string &name)
-{
-    std::ifstream f(std::string(MT_MISSIONS_DIR) + "/" + name, std::ios::binary);
-    EXPECT_TRUE(f.good()) << name;
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-struct Read {
-    mt_status_t st;
-    std::vector<mt_wpl_item_t> items;
-    mt_wpl_error_t err;
-    mt_wpl_warnings_t warn;
-};
-
-Read ReadPlan(const std::string &text, size_t cap = MT_CFG_MISSION_MAX_CMDS)
-{
-    Read r{};
-    r.items.resize(cap);
-    size_t n = 0;
-    r.st = mt_plan_parse(text.data(), text.size(), r.items.data(), cap, &n, &r.err, &r.warn);
-    r.items.resize(n);
-    return r;
-}
-
-Read ReadWpl(const std::string &text)
-{
-    Read r{};
-    r.items.resize(MT_CFG_MISSION_MAX_CMDS);
-    size_t n = 0;
-    r.st = mt_wpl_parse(text.data(), text.size(), r.items.data(), r.items.size(), &n, &r.err, &r.warn);
-    r.items.resize(n);
-    return r;
-}
+using mt_test::FileRead;
+using mt_test::ParsePlan;
+using mt_test::ParseWpl;
+using mt_test::ReadMissionFile;
 
 std::string WritePlan(const std::vector<mt_wpl_item_t> &items)
 {
@@ -120,7 +86,7 @@ std::string Simple(int command, int frame, const std::string &params, int jump_i
 
 TEST(MissionPlanFile, ReadsTheQgcExample)
 {
-    Read r = ReadPlan(ReadMission("qgc_example.plan"));
+    FileRead r = ParsePlan(ReadMissionFile("qgc_example.plan"));
     ASSERT_EQ(r.st, MT_OK) << r.err.reason;
     ASSERT_EQ(r.items.size(), 10u);
     const mt_wpl_item_t &h = r.items[0];
@@ -154,7 +120,7 @@ TEST(MissionPlanFile, ReadsTheQgcExample)
 
 TEST(MissionPlanFile, CheckReportOfAPlan)
 {
-    const std::string text = ReadMission("qgc_example.plan");
+    const std::string text = ReadMissionFile("qgc_example.plan");
     std::vector<mt_plan_step_t> steps(64);
     mt_report_t rep{};
     // the content decides (a .plan starts with '{'), and so does the explicit format
@@ -179,7 +145,7 @@ TEST(MissionPlanFile, CheckReportOfAPlan)
 
 TEST(MissionPlanFile, ComplexItemIsRefusedWithItsIndex)
 {
-    Read r = ReadPlan(ReadMission("bad/complex_item.plan"));
+    FileRead r = ParsePlan(ReadMissionFile("bad/complex_item.plan"));
     EXPECT_EQ(r.st, MT_E_MISSION_CMD);
     EXPECT_EQ(r.err.st, MT_E_MISSION_CMD);
     EXPECT_EQ(r.err.index, 4u); // items[3], after the home
@@ -187,7 +153,7 @@ TEST(MissionPlanFile, ComplexItemIsRefusedWithItsIndex)
                  "mission.items[3]: complex item \"survey\" refused: QGC makes its waypoints only on upload");
     EXPECT_TRUE(r.items.empty());
     for (const char *type : {"CorridorScan", "StructureScan"}) {
-        Read c = ReadPlan(PlanWith(Simple(22, 3, "0,0,0,0,0,0,10") + ", {\"type\": \"ComplexItem\", "
+        FileRead c = ParsePlan(PlanWith(Simple(22, 3, "0,0,0,0,0,0,10") + ", {\"type\": \"ComplexItem\", "
                                    "\"complexItemType\": \"" + type + "\"}"));
         EXPECT_EQ(c.st, MT_E_MISSION_CMD) << type;
         EXPECT_EQ(c.err.index, 2u) << type;
@@ -261,7 +227,7 @@ TEST(MissionPlanFile, MalformedPlansGiveWhereAndWhy)
          MT_E_MISSION_JUMP, 0, 5, 2, "not a doJumpId"},
     };
     for (const BadPlan &c : cases) {
-        Read r = ReadPlan(c.text);
+        FileRead r = ParsePlan(c.text);
         EXPECT_EQ(r.st, c.st) << c.what << ": " << r.err.reason;
         EXPECT_EQ(r.err.st, c.st) << c.what;
         EXPECT_EQ(r.err.line, c.line) << c.what;
@@ -278,24 +244,24 @@ TEST(MissionPlanFile, SizeLimits)
     for (int i = 0; i < 5; i++) {
         items += std::string(i ? ", " : "") + Simple(16, 3, "0,0,0,0,0,0,0");
     }
-    Read r = ReadPlan(PlanWith(items), 5); // 5 items + home > 5
+    FileRead r = ParsePlan(PlanWith(items), 5); // 5 items + home > 5
     EXPECT_EQ(r.st, MT_E_MISSION_SIZE);
     EXPECT_NE(std::string(r.err.reason).find("more than 5"), std::string::npos);
-    EXPECT_EQ(ReadPlan(PlanWith(items), 6).st, MT_OK);
+    EXPECT_EQ(ParsePlan(PlanWith(items), 6).st, MT_OK);
     // more JSON values than the limit: refused before cJSON allocates them
     std::string many = "{\"a\": [" + std::string(2 * MT_PLAN_MAX_VALUES, ',') + "]}";
-    Read m = ReadPlan(many);
+    FileRead m = ParsePlan(many);
     EXPECT_EQ(m.st, MT_E_MISSION_SIZE);
     EXPECT_NE(std::string(m.err.reason).find("JSON values"), std::string::npos);
     // deep nesting: cJSON's nesting limit, an error and no crash
-    Read d = ReadPlan(std::string(100000, '[') + std::string(100000, ']'));
+    FileRead d = ParsePlan(std::string(100000, '[') + std::string(100000, ']'));
     EXPECT_EQ(d.st, MT_E_MISSION_SYNTAX);
 }
 
 TEST(MissionPlanFile, DoJumpIdsAreMappedToIndices)
 {
     // doJumpIds need not be the indices (QGC maps them on load)
-    Read r = ReadPlan(PlanWith(Simple(22, 3, "0,0,0,0,0,0,10", 11) + ", " +
+    FileRead r = ParsePlan(PlanWith(Simple(22, 3, "0,0,0,0,0,0,10", 11) + ", " +
                                Simple(16, 3, "0,0,0,0,-35.3,149.1,20", 12) + ", " +
                                Simple(177, 2, "12,2,0,0,0,0,0", 13) + ", " + Simple(21, 3, "0,0,0,0,0,0,0", 14)));
     ASSERT_EQ(r.st, MT_OK) << r.err.reason;
@@ -304,7 +270,7 @@ TEST(MissionPlanFile, DoJumpIdsAreMappedToIndices)
     EXPECT_EQ(r.warn.w[0].index, 3u);
     EXPECT_STREQ(r.warn.w[0].reason, "mission.items[2]: DO_JUMP to doJumpId 12 is index 2");
     // written back, doJumpId is the index and param 1 stays the index
-    Read b = ReadPlan(WritePlan(r.items));
+    FileRead b = ParsePlan(WritePlan(r.items));
     ASSERT_EQ(b.st, MT_OK);
     EXPECT_EQ(b.items[3].p[0], 2.0);
     EXPECT_EQ(b.warn.n, 0u);
@@ -312,16 +278,16 @@ TEST(MissionPlanFile, DoJumpIdsAreMappedToIndices)
 
 TEST(MissionPlanFile, RoundTripPlanToWplToPlanKeepsEveryItem)
 {
-    Read a = ReadPlan(ReadMission("qgc_example.plan"));
+    FileRead a = ParsePlan(ReadMissionFile("qgc_example.plan"));
     ASSERT_EQ(a.st, MT_OK);
     // .plan -> WPL -> items
-    Read w = ReadWpl(WriteWpl(a.items));
+    FileRead w = ParseWpl(WriteWpl(a.items));
     ASSERT_EQ(w.st, MT_OK) << w.err.reason;
     EXPECT_EQ(w.warn.n, 0u);
     ExpectSameMission(a.items, w.items);
     // -> .plan -> items
     const std::string plan1 = WritePlan(w.items);
-    Read b = ReadPlan(plan1);
+    FileRead b = ParsePlan(plan1);
     ASSERT_EQ(b.st, MT_OK) << b.err.reason;
     EXPECT_EQ(b.warn.n, 0u); // no geofence or rally points in what we write
     ExpectSameMission(a.items, b.items);
@@ -333,7 +299,7 @@ TEST(MissionPlanFile, RoundTripPlanToWplToPlanKeepsEveryItem)
 
 TEST(MissionPlanFile, ConvertWplToPlanAndBack)
 {
-    Read w = ReadWpl(ReadMission("plain.waypoints"));
+    FileRead w = ParseWpl(ReadMissionFile("plain.waypoints"));
     ASSERT_EQ(w.st, MT_OK);
     const std::string plan = WritePlan(w.items);
     // what QGC reads: check the structure with cJSON itself
@@ -362,7 +328,7 @@ TEST(MissionPlanFile, ConvertWplToPlanAndBack)
         cJSON_GetObjectItemCaseSensitive(root, "geoFence"), "polygons")));
     cJSON_Delete(root);
     // and back: the same mission, and the same WPL text
-    Read b = ReadPlan(plan);
+    FileRead b = ParsePlan(plan);
     ASSERT_EQ(b.st, MT_OK) << b.err.reason;
     ExpectSameMission(w.items, b.items);
     EXPECT_EQ(WriteWpl(b.items), WriteWpl(w.items));
@@ -386,7 +352,7 @@ TEST(MissionPlanFile, WriterValues)
     const std::string s = WritePlan(v);
     EXPECT_NE(s.find("0.30000000000000004"), std::string::npos) << s;
     EXPECT_NE(s.find("[0.30000000000000004, -0, 1e-300, null, 0, 0, 20]"), std::string::npos) << s;
-    Read r = ReadPlan(s);
+    FileRead r = ParsePlan(s);
     ASSERT_EQ(r.st, MT_OK);
     EXPECT_TRUE(SameValue(r.items[1].p[0], 0.1 + 0.2));
     EXPECT_TRUE(std::signbit(r.items[1].p[1]));
@@ -421,7 +387,7 @@ TEST(MissionPlanFile, FormatByNameAndContent)
     EXPECT_EQ(mt_mfile_sniff("QGC WPL 110\n", 12), MT_MFILE_WPL);
     EXPECT_EQ(mt_mfile_sniff("", 0), MT_MFILE_WPL);
     // a BOM before the JSON is accepted too
-    Read r = ReadPlan("\xEF\xBB\xBF" + PlanWith(Simple(16, 3, "0,0,0,0,0,0,0")));
+    FileRead r = ParsePlan("\xEF\xBB\xBF" + PlanWith(Simple(16, 3, "0,0,0,0,0,0,0")));
     EXPECT_EQ(r.st, MT_OK) << r.err.reason;
 }
 

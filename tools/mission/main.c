@@ -97,20 +97,12 @@ static char *slurp(const char *path, size_t *len)
     return buf;
 }
 
-/* "file:line: field F: index I: " (line 0: none) */
+/* "file:line: field F: index I:" (mt_wpl_where) */
 static void print_where(FILE *out, const char *file, const mt_wpl_error_t *e)
 {
-    if (e->line != 0u) {
-        fprintf(out, "%s:%u:", file, (unsigned)e->line);
-    } else {
-        fprintf(out, "%s:", file);
-    }
-    if (e->field != 0u) {
-        fprintf(out, " field %u:", (unsigned)e->field);
-    }
-    if (e->index != MT_MISSION_NONE) {
-        fprintf(out, " index %u:", (unsigned)e->index);
-    }
+    char where[MT_WPL_WHERE_MAX];
+
+    fputs(mt_wpl_where(where, sizeof where, file, e), out);
 }
 
 static void print_warnings(const char *file, const mt_wpl_warnings_t *w)

@@ -353,17 +353,10 @@ static int load_file(const char *path, mt_mission_cmd_t *cmds, veh_home_t *home)
         printf("mission file rejected: %s\n", path);
         for (i = 0u; i < rep->nerr; i++) {
             const mt_wpl_error_t *x = &rep->errors[i];
-            printf("  %s:", path);
-            if (x->line != 0u) {
-                printf("%u:", (unsigned)x->line);
-            }
-            if (x->field != 0u) {
-                printf(" field %u:", (unsigned)x->field);
-            }
-            if (x->index != MT_MISSION_NONE) {
-                printf(" index %u:", (unsigned)x->index);
-            }
-            printf(" %s (%s)\n", x->reason, mt_status_str(x->st));
+            char where[MT_WPL_WHERE_MAX];
+
+            printf("  %s %s (%s)\n", mt_wpl_where(where, sizeof where, path, x), x->reason,
+                   mt_status_str(x->st));
         }
     } else if (mt_mfile_parse(fmt, text, len, items, MT_CFG_MISSION_MAX_CMDS, &n, &e, NULL) == MT_OK) {
         result = (int)n;
