@@ -26,11 +26,17 @@ help:
 	@echo "  make clean"
 	@echo "Test"
 	@echo "  make test            install test deps; googletest suite under gcc, clang, ASan, UBSan,"
-	@echo "                       TSan; mt-mission over the mission files; test-vehicle;"
-	@echo "                       test-proof-tools"
+	@echo "                       TSan; mt-mission over the mission files; check-mav-cmds;"
+	@echo "                       test-mission-diff; test-vehicle; test-proof-tools"
 	@echo "  make test-fast       the suite once (gcc);  make test-clang | test-asan | test-ubsan |"
 	@echo "                       test-tsan: the suite under one of the other builds"
-	@echo "  make test-mission    mission tests (gcc, ASan+UBSan) and mt-mission over tests/missions"
+	@echo "  make test-mission    mission tests (gcc, ASan+UBSan), mt-mission over tests/missions and"
+	@echo "                       check-mav-cmds, test-mission-diff"
+	@echo "  make test-mission-diff  the sequencer against the AP_Mission reference: self-check,"
+	@echo "                       ArduPilot autotest fixtures, 1,000 random missions (MISSION_DIFF_SEED)"
+	@echo "  make test-mission-deep  the same over 100,000 missions"
+	@echo "  make mav-cmds        regenerate the mission command tables from MAVLink's XML (pymavlink);"
+	@echo "                       make check-mav-cmds: fail with a diff when the committed ones are stale"
 	@echo "  make test-vehicle    SITL flights, fault injection, bad missions, sched-check vs SITL"
 	@echo "  make test-proof-tools  pytest: the strict gate fed every kind of failure, the canary"
 	@echo "                       checker, the mutants' rotation, shard plan and merge, reprove"
@@ -119,6 +125,8 @@ test: deps-test
 	    $(BUILD)/$$v/mt_tests --gtest_brief=1; \
 	done
 	@$(MAKE) --no-print-directory test-mission-tool
+	@$(MAKE) --no-print-directory check-mav-cmds
+	@$(MAKE) --no-print-directory test-mission-diff
 	@$(MAKE) --no-print-directory test-vehicle
 	@$(MAKE) --no-print-directory test-proof-tools
 

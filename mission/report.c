@@ -24,7 +24,8 @@ typedef struct {
     uint8_t do_done;
     uint16_t nav;
     uint16_t do_cmd;
-    uint16_t wpos;
+    uint16_t nav_idx;
+    uint16_t do_idx;
     uint16_t prev_nav;
     int16_t count[MT_CFG_MISSION_MAX_CMDS];
 } snap_t;
@@ -35,15 +36,17 @@ static void snap_take(snap_t *s, const mt_mission_t *m)
     s->do_done = m->do_done;
     s->nav = m->nav;
     s->do_cmd = m->do_cmd;
-    s->wpos = m->wpos;
+    s->nav_idx = m->nav_idx;
+    s->do_idx = m->do_idx;
     s->prev_nav = m->prev_nav;
     memcpy(s->count, m->count, (size_t)m->total * sizeof m->count[0]);
 }
 
 static int snap_same(const snap_t *s, const mt_mission_t *m)
 {
-    return s->state == m->state && s->do_done == m->do_done && s->nav == m->nav && s->do_cmd == m->do_cmd &&
-           s->wpos == m->wpos && s->prev_nav == m->prev_nav &&
+    return s->state == m->state && s->do_done == m->do_done && s->nav == m->nav &&
+           s->do_cmd == m->do_cmd && s->nav_idx == m->nav_idx && s->do_idx == m->do_idx &&
+           s->prev_nav == m->prev_nav &&
            memcmp(s->count, m->count, (size_t)m->total * sizeof m->count[0]) == 0;
 }
 
@@ -56,6 +59,8 @@ static bool sim_start(void *ctx, uint16_t i, const mt_mission_cmd_t *c)
         st->index = i;
         st->command = c->id;
         st->kind = mt_mission_kind_of(c->id);
+        /* during the nav advance no nav command is active (mt/mission.h) */
+        st->during = st->kind == MT_MISSION_KIND_NAV ? MT_MISSION_NONE : s->m->nav;
         s->rep->nplan++;
     }
     s->steps++;
@@ -94,9 +99,9 @@ static const char *cmd_problem(mt_status_t st, size_t i, uint8_t frame)
         snprintf(buf, sizeof buf, "frame %u is not supported for this command", (unsigned)frame);
         return buf;
     case MT_E_MISSION_JUMP:
-        return "jump target outside [1, count), tag outside [0, 65535], or repeat not -1 or 0..32767";
-    default:
-        return "rejected";
+        return "jump target outside [1, count), tag outside [0, 65535], or repeat not -1 or "
+               "0..32767";
+    default: return "rejected";
     }
 }
 
@@ -107,7 +112,8 @@ static void add_err(mt_report_t *rep, const mt_wpl_error_t *e)
     }
 }
 
-/* Run the sequencer with every verify succeeding; record the plan, decide why it is cut. */
+/* Run the sequencer under the report's verify policy (report.h); record the plan, decide why
+ * it is cut. */
 static void run_plan(mt_mission_t *m, sim_t *sim, mt_report_t *rep)
 {
     const size_t limit = 8u * (sim->max_plan + 8u) + MT_REPORT_EXTRA_UPDATES;
@@ -348,6 +354,7 @@ size_t mt_report_text(const mt_report_t *rep, const char *file, char *out, size_
 {
     buf_t b = {out, cap, 0u};
     size_t i;
+    int timed = 0;
 
     if (cap > 0u) {
         out[0] = '\0';
@@ -368,25 +375,51 @@ size_t mt_report_text(const mt_report_t *rep, const char *file, char *out, size_
         put(&b, "%s: INVALID (%u error%s)\n", file, (unsigned)rep->nerr, rep->nerr == 1u ? "" : "s");
         return b.used;
     }
-    put(&b, "%s: valid, %u items\nplan (every verify succeeds, jumps unrolled):\n", file,
-        (unsigned)rep->nitems);
+    put(&b,
+        "%s: valid, %u items\nplan (start order, jumps unrolled; a do command verifies at once, a "
+        "nav command "
+        "once the do commands before it have started):\n",
+        file, (unsigned)rep->nitems);
     for (i = 0u; i < rep->nplan; i++) {
         const mt_plan_step_t *s = &rep->plan[i];
-        put(&b, "  %4u  %-3s  #%-4u %s (%u)\n", (unsigned)i + 1u, s->kind == MT_MISSION_KIND_NAV ? "nav" : "do",
-            (unsigned)s->index, cmd_label(s->command), (unsigned)s->command);
+        put(&b, "  %4u  %-3s  #%-4u %s (%u)", (unsigned)i + 1u,
+            s->kind == MT_MISSION_KIND_NAV ? "nav" : "do", (unsigned)s->index,
+            cmd_label(s->command), (unsigned)s->command);
+        if (s->kind != MT_MISSION_KIND_NAV && s->during != MT_MISSION_NONE) {
+            put(&b, "  while #%u runs*", (unsigned)s->during);
+            timed = 1;
+        }
+        put(&b, "\n");
     }
     if (rep->truncated == (int)MT_REPORT_FOREVER) {
         put(&b, "  ... truncated after %u steps: the mission repeats forever\n", (unsigned)rep->nplan);
     } else if (rep->truncated != 0 && rep->plan_total != 0u) {
-        put(&b, "  ... truncated after %u steps: longer than the plan limit (%u steps in all; --max-plan)\n",
+        put(&b,
+            "  ... truncated after %u steps: longer than the plan limit (%u steps in all; "
+            "--max-plan)\n",
             (unsigned)rep->nplan, (unsigned)rep->plan_total);
     } else if (rep->truncated != 0) {
         put(&b,
-            "  ... truncated after %u steps: longer than the plan limit (no end and no repetition found "
+            "  ... truncated after %u steps: longer than the plan limit (no end and no repetition "
+            "found "
             "in %u more sequencer updates)\n",
             (unsigned)rep->nplan, (unsigned)MT_REPORT_EXTRA_UPDATES);
     } else {
         put(&b, "  mission complete\n");
+    }
+    if (rep->kernel_max != 0u) {
+        put(&b, "%s a kernel built with MT_CFG_MISSION_MAX_CMDS=%u: %u commands, home included%s\n",
+            rep->nitems <= rep->kernel_max ? "fits" : "does NOT fit", (unsigned)rep->kernel_max,
+            (unsigned)rep->nitems, rep->nitems <= rep->kernel_max ? "" : " (build it with a larger setting)");
+    }
+    if (timed) {
+        put(&b, "* starts while that nav command runs, at the update after the previous do command "
+                "verified: "
+                "with slower do or condition commands it starts later, and it is dropped if the "
+                "nav command "
+                "completes first (ArduPilot's AP_Mission order; the other do commands start with "
+                "the nav "
+                "advance, whatever the timing)\n");
     }
     return b.used;
 }
@@ -413,9 +446,15 @@ size_t mt_report_json(const mt_report_t *rep, char *out, size_t cap)
     put(&b, ", \"plan\": [");
     for (i = 0u; i < rep->nplan; i++) {
         const mt_plan_step_t *s = &rep->plan[i];
-        put(&b, "%s{\"index\": %u, \"command\": %u, \"name\": \"%s\", \"kind\": \"%s\"}", i ? ", " : "",
-            (unsigned)s->index, (unsigned)s->command, cmd_label(s->command),
+        put(&b,
+            "%s{\"index\": %u, \"command\": %u, \"name\": \"%s\", \"kind\": \"%s\", \"during\": ",
+            i ? ", " : "", (unsigned)s->index, (unsigned)s->command, cmd_label(s->command),
             s->kind == MT_MISSION_KIND_NAV ? "nav" : "do");
+        if (s->during != MT_MISSION_NONE) {
+            put(&b, "%u}", (unsigned)s->during);
+        } else {
+            put(&b, "null}");
+        }
     }
     put(&b, "], \"truncated\": %s, \"truncated_reason\": ", rep->truncated ? "true" : "false");
     if (rep->truncated) {
@@ -424,9 +463,14 @@ size_t mt_report_json(const mt_report_t *rep, char *out, size_t cap)
         put(&b, "null");
     }
     if (rep->valid && rep->plan_total != 0u) {
-        put(&b, ", \"plan_total\": %u}\n", (unsigned)rep->plan_total);
+        put(&b, ", \"plan_total\": %u", (unsigned)rep->plan_total);
     } else {
-        put(&b, ", \"plan_total\": null}\n");
+        put(&b, ", \"plan_total\": null");
     }
+    if (rep->kernel_max != 0u) {
+        put(&b, ", \"items\": %u, \"kernel_max_cmds\": %u, \"fits_kernel\": %s", (unsigned)rep->nitems,
+            (unsigned)rep->kernel_max, rep->nitems <= rep->kernel_max ? "true" : "false");
+    }
+    put(&b, "}\n");
     return b.used;
 }

@@ -3,11 +3,18 @@
  * @file report.h
  * @brief Whole-file check and execution plan (the core of `mt-mission check`).
  *
- * The plan is produced by the kernel sequencer itself (mt/mission.h), driven
- * by a simulated vehicle whose start callbacks succeed and whose verify
- * callbacks succeed as soon as possible: a do command at once, a nav command
- * once the do commands before it have all run. Jumps are therefore unrolled
- * exactly as on the vehicle. A plan longer than max_plan is cut and marked
+ * The plan is produced by the kernel sequencer itself (mt/mission.h, which
+ * follows AP_Mission), driven by a simulated vehicle under one verify policy:
+ * every start succeeds; a do or condition command verifies at its first
+ * check; a nav command verifies once every do command between the previous
+ * nav command and it has started (the do search has reached it). The plan
+ * lists nav, do and condition commands in start order, jumps unrolled exactly
+ * as on the vehicle. Each do step says how it started: with the nav advance
+ * (the first do command after a nav command starts just before the next nav
+ * command, or before the end of the mission) or while a nav command runs
+ * (the later ones, one at a time). Only the latter depend on timing: under
+ * slower do or condition commands they start later, and those not started
+ * when that nav command completes are dropped; the text report says so. A plan longer than max_plan is cut and marked
  * truncated, with the reason: the sequencer is run on (without recording) for
  * up to MT_REPORT_EXTRA_UPDATES more updates; if its state repeats (Brent's
  * cycle detection on the cursors and jump counters) the mission repeats
@@ -42,7 +49,9 @@ extern "C" {
 typedef struct {
     uint16_t index;
     uint16_t command;
-    uint8_t kind; /**< MT_MISSION_KIND_NAV or MT_MISSION_KIND_DO */
+    uint8_t kind;    /**< MT_MISSION_KIND_NAV or MT_MISSION_KIND_DO */
+    uint16_t during; /**< do step: the nav command that was running when it started, or
+                          MT_MISSION_NONE when the nav advance started it; nav: NONE */
 } mt_plan_step_t;
 
 typedef struct {
@@ -55,6 +64,9 @@ typedef struct {
     size_t max_plan;
     int truncated;        /**< MT_REPORT_COMPLETE, MT_REPORT_FOREVER or MT_REPORT_OVER_LIMIT */
     size_t plan_total;    /**< steps of the whole plan; 0 when it does not end (or not found) */
+    size_t kernel_max;    /**< set by the caller before rendering: the MT_CFG_MISSION_MAX_CMDS of
+                               the kernel the mission is meant for, to say whether it fits
+                               (0: not said). The checks themselves use this build's setting. */
     mt_wpl_warnings_t warnings;
 } mt_report_t;
 

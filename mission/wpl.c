@@ -5,6 +5,8 @@
  */
 #include "wpl.h"
 
+#include "mav_cmd_names.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -371,13 +373,28 @@ size_t mt_wpl_write(const mt_wpl_item_t *items, size_t n, char *out, size_t cap)
     return used;
 }
 
-/* Do commands that carry a location (the kernel's F_LOC do commands; ArduPilot's
- * AP_Mission::stored_in_location): their frame matters. */
-static const uint32_t k_do_with_location[] = {179u, 188u, 189u, 191u, 195u, 201u};
+/* The generated row of a command id (mav_cmd_names.h, sorted by id), or NULL. */
+static const mt_mav_cmd_name_t *cmd_row(uint32_t id)
+{
+    size_t lo = 0u, hi = MT_MAV_CMD_NAMES_COUNT;
+
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2u;
+        if (k_mav_cmd_names[mid].id == id) {
+            return &k_mav_cmd_names[mid];
+        }
+        if (k_mav_cmd_names[mid].id < id) {
+            lo = mid + 1u;
+        } else {
+            hi = mid;
+        }
+    }
+    return NULL;
+}
 
 int mt_wpl_frame_ignored(uint32_t command)
 {
-    size_t i;
+    const mt_mav_cmd_name_t *row;
     uint8_t kind;
 
     if (command > 0xFFFFu) {
@@ -387,12 +404,9 @@ int mt_wpl_frame_ignored(uint32_t command)
     if (kind != MT_MISSION_KIND_DO && kind != MT_MISSION_KIND_JUMP && kind != MT_MISSION_KIND_TAG) {
         return 0; /* nav commands, home, unknown ids */
     }
-    for (i = 0u; i < sizeof k_do_with_location / sizeof k_do_with_location[0]; i++) {
-        if (k_do_with_location[i] == command) {
-            return 0;
-        }
-    }
-    return 1;
+    /* do commands with a location (the kernel's F_LOC, MAVLink's hasLocation): frame matters */
+    row = cmd_row(command);
+    return (row != NULL && row->location != 0u) ? 0 : 1;
 }
 
 /* Frames the kernel accepts for some command (mission.c frame_ok). */
@@ -475,40 +489,9 @@ mt_status_t mt_wpl_to_cmd(const mt_wpl_item_t *it, mt_mission_cmd_t *out, mt_wpl
     return MT_OK;
 }
 
-typedef struct {
-    uint32_t id;
-    const char *name;
-} cmd_name_t;
-
-static const cmd_name_t k_names[] = {
-    {16, "WAYPOINT"}, {17, "LOITER_UNLIM"}, {18, "LOITER_TURNS"}, {19, "LOITER_TIME"},
-    {20, "RETURN_TO_LAUNCH"}, {21, "LAND"}, {22, "TAKEOFF"}, {30, "CONTINUE_AND_CHANGE_ALT"},
-    {31, "LOITER_TO_ALT"}, {82, "SPLINE_WAYPOINT"}, {83, "ALTITUDE_WAIT"}, {84, "VTOL_TAKEOFF"},
-    {85, "VTOL_LAND"}, {92, "GUIDED_ENABLE"}, {93, "DELAY"}, {94, "PAYLOAD_PLACE"},
-    {112, "CONDITION_DELAY"}, {113, "CONDITION_CHANGE_ALT"}, {114, "CONDITION_DISTANCE"},
-    {115, "CONDITION_YAW"}, {176, "DO_SET_MODE"}, {177, "DO_JUMP"}, {178, "DO_CHANGE_SPEED"},
-    {179, "DO_SET_HOME"}, {181, "DO_SET_RELAY"}, {182, "DO_REPEAT_RELAY"}, {183, "DO_SET_SERVO"},
-    {184, "DO_REPEAT_SERVO"}, {188, "DO_RETURN_PATH_START"}, {189, "DO_LAND_START"},
-    {191, "DO_GO_AROUND"}, {194, "DO_SET_REVERSE"}, {195, "DO_SET_ROI_LOCATION"},
-    {197, "DO_SET_ROI_NONE"}, {201, "DO_SET_ROI"}, {202, "DO_DIGICAM_CONFIGURE"},
-    {203, "DO_DIGICAM_CONTROL"}, {205, "DO_MOUNT_CONTROL"}, {206, "DO_SET_CAM_TRIGG_DIST"},
-    {207, "DO_FENCE_ENABLE"}, {208, "DO_PARACHUTE"}, {210, "DO_INVERTED_FLIGHT"}, {211, "DO_GRIPPER"},
-    {212, "DO_AUTOTUNE_ENABLE"}, {213, "NAV_SET_YAW_SPEED"}, {214, "DO_SET_RESUME_REPEAT_DIST"},
-    {215, "DO_SPRAYER"}, {216, "DO_SEND_SCRIPT_MESSAGE"}, {217, "DO_AUX_FUNCTION"},
-    {222, "DO_GUIDED_LIMITS"}, {223, "DO_ENGINE_CONTROL"}, {600, "JUMP_TAG"}, {601, "DO_JUMP_TAG"},
-    {1000, "DO_GIMBAL_MANAGER_PITCHYAW"}, {2000, "IMAGE_START_CAPTURE"}, {2001, "IMAGE_STOP_CAPTURE"},
-    {2500, "VIDEO_START_CAPTURE"}, {2501, "VIDEO_STOP_CAPTURE"}, {3000, "DO_VTOL_TRANSITION"},
-    {42702, "NAV_SCRIPT_TIME"}, {42703, "NAV_ATTITUDE_TIME"},
-};
-
 const char *mt_wpl_cmd_name(uint32_t id)
 {
-    size_t i;
+    const mt_mav_cmd_name_t *row = cmd_row(id);
 
-    for (i = 0u; i < sizeof k_names / sizeof k_names[0]; i++) {
-        if (k_names[i].id == id) {
-            return k_names[i].name;
-        }
-    }
-    return NULL;
+    return row != NULL ? row->name : NULL;
 }

@@ -122,7 +122,8 @@ int mt_wpl_frame_ignored(uint32_t command);
  *  @retval MT_E_MISSION_FRAME frame above 255 */
 mt_status_t mt_wpl_to_cmd(const mt_wpl_item_t *it, mt_mission_cmd_t *out, mt_wpl_error_t *err);
 
-/** Short MAVLink name of a command id ("WAYPOINT"), or NULL when unknown. */
+/** MAVLink name of a command id without MAV_CMD_ ("NAV_WAYPOINT"; generated table
+ *  mav_cmd_names.h: the commands the kernel accepts), or NULL when unknown. */
 const char *mt_wpl_cmd_name(uint32_t id);
 
 #ifdef __cplusplus

@@ -250,7 +250,7 @@ TEST(MissionPlan, RepeatForeverIsTruncated)
     Plan p = Check(ReadMissionFile("repeat_forever.waypoints"), 10);
     EXPECT_TRUE(p.rep.valid);
     EXPECT_EQ(p.rep.truncated, (int)MT_REPORT_FOREVER);
-    EXPECT_EQ(p.Seq(), "n1 n2 n4 d3 n2 n4 d3 n2 n4 d3");
+    EXPECT_EQ(p.Seq(), "n1 n2 d3 n4 n2 d3 n4 n2 d3 n4");
 }
 
 TEST(MissionPlan, JumpTags)
@@ -259,22 +259,24 @@ TEST(MissionPlan, JumpTags)
     EXPECT_EQ(p.Seq(), "n1 n3 n4 n3 n4 n7");
 }
 
-TEST(MissionPlan, DoOnlyStretchesRunAfterThePreviousNav)
+TEST(MissionPlan, DoStretchesStartWithTheNextNav)
 {
+    // the first do command of each stretch starts just before the nav command after it,
+    // the others while that nav command runs; the trailing one before the last nav
     Plan p = Check(ReadMissionFile("do_only_stretches.waypoints"));
-    EXPECT_EQ(p.Seq(), "n3 d1 d2 n7 d4 d5 d6 n9 d8");
+    EXPECT_EQ(p.Seq(), "d1 n3 d2 d4 n7 d5 d6 d8 n9");
 }
 
 TEST(MissionPlan, Conditions)
 {
     Plan p = Check(ReadMissionFile("conditions.waypoints"));
-    EXPECT_EQ(p.Seq(), "n1 n5 d2 d3 d4 n8 d6 d7 n9");
+    EXPECT_EQ(p.Seq(), "n1 d2 n5 d3 d4 d6 n8 d7 n9");
 }
 
 TEST(MissionPlan, LandAndRtl)
 {
     Plan p = Check(ReadMissionFile("land_rtl.waypoints"));
-    EXPECT_EQ(p.Seq(), "n1 n2 n3 n5 d4 n6");
+    EXPECT_EQ(p.Seq(), "n1 n2 n3 d4 n5 n6");
 }
 
 struct BadFile {
@@ -321,11 +323,12 @@ TEST(MissionPlan, JsonShape)
     EXPECT_EQ(
         j.rfind("{\"valid\": true, \"errors\": [], \"warnings\": [], \"warnings_not_shown\": 0, "
                 "\"plan\": [{\"index\": 1, \"command\": 22, "
-                "\"name\": \"TAKEOFF\", \"kind\": \"nav\"}",
+                "\"name\": \"NAV_TAKEOFF\", \"kind\": \"nav\", \"during\": null}",
                 0),
         0u)
         << j;
-    EXPECT_NE(j.find("\"truncated\": true, \"truncated_reason\": \"repeats forever\", \"plan_total\": null}"),
+    EXPECT_NE(j.find("\"truncated\": true, \"truncated_reason\": \"repeats forever\", "
+                     "\"plan_total\": null}"),
               std::string::npos)
         << j;
     EXPECT_NE(j.find("\"errors\": [], \"warnings\": [], \"warnings_not_shown\": 0, \"plan\": ["),
@@ -517,13 +520,13 @@ TEST(MissionFileCompat, DoCommandInFrameOneIsAccepted)
     Plan p = Check(ReadMissionFile("warn/do_frame1.waypoints"));
     EXPECT_EQ(p.st, MT_OK);
     EXPECT_TRUE(p.rep.valid);
-    EXPECT_EQ(p.Seq(), "n1 n3 d2 n5 d4");
+    EXPECT_EQ(p.Seq(), "n1 d2 n3 d4 n5");
     ASSERT_EQ(p.rep.warnings.n, 2u);
     EXPECT_EQ(p.rep.warnings.w[0].line, 4u);
     EXPECT_EQ(p.rep.warnings.w[0].field, 3u);
     EXPECT_EQ(p.rep.warnings.w[0].index, 2u);
-    EXPECT_STREQ(p.rep.warnings.w[0].reason,
-                 "frame 1 ignored: command 183 (DO_SET_SERVO) has no location; checked as frame 2 (MISSION)");
+    EXPECT_STREQ(p.rep.warnings.w[0].reason, "frame 1 ignored: command 183 (DO_SET_SERVO) has no "
+                                             "location; checked as frame 2 (MISSION)");
     // a nav command, or a do command with a location, in frame 1 is still refused
     Plan n = Check("QGC WPL 110\n" + kHome + "\n1 0 1 16 0 0 0 0 -35.36 149.16 30 1\n"
                    "2 0 1 201 0 0 0 0 -35.36 149.16 30 1\n");
@@ -541,7 +544,8 @@ TEST(MissionFileCompat, HeaderOnlyFileReportsTheHeaderLine)
     ASSERT_EQ(p.rep.nerr, 1u);
     EXPECT_EQ(p.rep.errors[0].line, 1u);
     EXPECT_EQ(Text(p.rep, "h.waypoints"),
-              "h.waypoints:1: index 0: no items after the header: a mission needs at least the home entry "
+              "h.waypoints:1: index 0: no items after the header: a mission needs at least the "
+              "home entry "
               "(index 0) [MT_E_MISSION_SIZE]\nh.waypoints: INVALID (1 error)\n");
 }
 
@@ -549,9 +553,12 @@ TEST(MissionFileCompat, WarningsAreListedInJsonAndText)
 {
     Plan p = Check(ReadMissionFile("warn/mission_planner_home.waypoints"));
     const std::string j = Json(p.rep);
-    EXPECT_NE(j.find("\"errors\": [], \"warnings\": [{\"line\": 3, \"field\": 4, \"index\": 0, \"reason\": "
-                     "\"home: command 0 (Mission Planner) read as WAYPOINT (16)\"}], \"warnings_not_shown\": 0"),
-              std::string::npos)
+    EXPECT_NE(
+        j.find(
+            "\"errors\": [], \"warnings\": [{\"line\": 3, \"field\": 4, \"index\": 0, \"reason\": "
+            "\"home: command 0 (Mission Planner) read as WAYPOINT (16)\"}], "
+            "\"warnings_not_shown\": 0"),
+        std::string::npos)
         << j;
     const std::string t = Text(p.rep, "mp.waypoints");
     EXPECT_EQ(t.rfind("mp.waypoints:3: field 4: index 0: warning: home: command 0 (Mission Planner) read as "
@@ -599,6 +606,45 @@ TEST(MissionPlanTruncation, SaysWhy)
     EXPECT_EQ(h.rep.plan_total, 0u);
     EXPECT_NE(Text(h.rep, "h").find("longer than the plan limit (no end and no repetition found"),
               std::string::npos);
+}
+
+TEST(MissionPlan, EachDoStepSaysWhetherItsStartDependsOnTiming)
+{
+    // item 2 of the mission rules: one verify policy, and the report says which do commands
+    // start with the nav advance (any timing) and which while a nav command runs (later, or
+    // dropped, under slower do commands)
+    Plan p = Check(ReadMissionFile("conditions.waypoints"));
+    ASSERT_EQ(p.Seq(), "n1 d2 n5 d3 d4 d6 n8 d7 n9");
+    const uint16_t during[] = {MT_MISSION_NONE,
+                               MT_MISSION_NONE,
+                               MT_MISSION_NONE,
+                               5,
+                               5,
+                               MT_MISSION_NONE,
+                               MT_MISSION_NONE,
+                               8,
+                               MT_MISSION_NONE};
+    ASSERT_EQ(p.steps.size(), 9u);
+    for (size_t i = 0; i < p.steps.size(); i++) {
+        EXPECT_EQ(p.steps[i].during, during[i]) << i;
+    }
+    const std::string t = Text(p.rep, "c.waypoints");
+    EXPECT_NE(t.find("#3    DO_SET_SERVO (183)  while #5 runs*"), std::string::npos) << t;
+    EXPECT_NE(t.find("it is dropped if the nav command completes first"), std::string::npos) << t;
+    EXPECT_EQ(t.find("#2    CONDITION_DELAY (112)  while"), std::string::npos) << t;
+    const std::string j = Json(p.rep);
+    EXPECT_NE(j.find("{\"index\": 3, \"command\": 183, \"name\": \"DO_SET_SERVO\", \"kind\": "
+                     "\"do\", \"during\": 5}"),
+              std::string::npos)
+        << j;
+    // a trailing do command starts with the advance, then the mission completes
+    Plan q = Check("QGC WPL 110\n" + kHome + "\n1\t0\t3\t22\t0\t0\t0\t0\t0\t0\t15\t1\n" +
+                   "2\t0\t2\t208\t2\t0\t0\t0\t0\t0\t0\t1\n");
+    EXPECT_EQ(q.Seq(), "n1 d2");
+    EXPECT_EQ(q.rep.truncated, (int)MT_REPORT_COMPLETE);
+    ASSERT_EQ(q.steps.size(), 2u);
+    EXPECT_EQ(q.steps[1].during, MT_MISSION_NONE);
+    EXPECT_EQ(Text(q.rep, "p").find("runs*"), std::string::npos);
 }
 
 } // namespace

@@ -133,7 +133,7 @@ TEST(MissionPlanFile, CheckReportOfAPlan)
         seq += (seq.empty() ? "" : " ") + std::string(steps[i].kind == MT_MISSION_KIND_NAV ? "n" : "d") +
                std::to_string(steps[i].index);
     }
-    EXPECT_EQ(seq, "n1 n3 d2 n5 d4 n3 n5 d4 n8 d7 n9");
+    EXPECT_EQ(seq, "n1 d2 n3 d4 n5 n3 d4 n5 d7 n8 n9");
     mt_report_t rep2{};
     ASSERT_EQ(mt_report_check_as(MT_MFILE_PLAN, text.data(), text.size(), steps.data(), steps.size(), &rep2), MT_OK);
     EXPECT_EQ(rep2.nplan, rep.nplan);

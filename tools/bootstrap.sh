@@ -77,12 +77,41 @@ first_line() {
 }
 
 # ---------------------------------------------------------------------------------------------
-# test: host compilers, GoogleTest, valgrind, clang sanitizers, cJSON (mission .plan files)
+# test: host compilers, GoogleTest, valgrind, clang sanitizers, cJSON (mission .plan files),
+#       pymavlink (MAVLink XML for the generated mission command tables)
 # ---------------------------------------------------------------------------------------------
 sanitizer_links() {
     local dir="$1" san="$2"
     printf 'int main(void) { return 0; }\n' >"$dir/t.c"
     clang -fsanitize="$san" -o "$dir/t" "$dir/t.c" >"$dir/log" 2>&1
+}
+
+# pymavlink's MAVLink definitions (common.xml, ardupilotmega.xml) feed
+# tools/mavcmd/gen_mav_cmds.py, which checks the committed mission command tables (make
+# check-mav-cmds). Pinned; pip installs it into .tools/pymavlink (no dependencies: only its XML
+# files are read) unless the python3 on the PATH already imports that version.
+PYMAVLINK_VERSION=2.4.50
+
+# pymavlink_version: the version `python3` imports, .tools/pymavlink first; fails if none.
+pymavlink_version() {
+    PYTHONPATH="$TOOLS/pymavlink${PYTHONPATH:+:$PYTHONPATH}" python3 -c \
+        'import importlib.metadata as m, pymavlink; print(m.version("pymavlink"))' 2>/dev/null
+}
+
+ensure_pymavlink() {
+    if [ "$(pymavlink_version || true)" != "$PYMAVLINK_VERSION" ]; then
+        python3 -m pip --version >/dev/null 2>&1 || apt_ensure python3-pip
+        rm -rf "$TOOLS/pymavlink"
+        mkdir -p "$TOOLS"
+        quiet pip-pymavlink python3 -m pip install --disable-pip-version-check --no-input --no-deps \
+            --target "$TOOLS/pymavlink" "pymavlink==$PYMAVLINK_VERSION"
+        [ "$(pymavlink_version || true)" = "$PYMAVLINK_VERSION" ] ||
+            die "pymavlink $PYMAVLINK_VERSION not importable after pip install (.tools/pymavlink)"
+    fi
+    local where
+    where="$(PYTHONPATH="$TOOLS/pymavlink${PYTHONPATH:+:$PYTHONPATH}" python3 -c \
+        'import os, pymavlink; print(os.path.dirname(pymavlink.__file__))')"
+    record pymavlink "pymavlink $PYMAVLINK_VERSION (${where#"$ROOT"/}; MAVLink XML for tools/mavcmd)"
 }
 
 do_test() {
@@ -105,6 +134,7 @@ do_test() {
     record googletest "googletest $(pkg_version googletest)"
     record valgrind "$(first_line valgrind --version)"
     record cjson "libcjson-dev $(pkg_version libcjson-dev)"
+    ensure_pymavlink
 }
 
 # ---------------------------------------------------------------------------------------------

@@ -74,9 +74,18 @@ static void invariants(const mt_mission_t *m)
     if (m->nav != MT_MISSION_NONE && (m->nav < 1u || m->nav >= m->total || m->kind[m->nav] != MT_MISSION_KIND_NAV)) {
         abort();
     }
+    /* the active do command (or a JUMP_TAG in the do slot) needs an active nav command */
     if (m->do_cmd != MT_MISSION_NONE &&
-        (m->do_cmd < 1u || m->do_cmd >= m->total || m->kind[m->do_cmd] != MT_MISSION_KIND_DO ||
-         m->nav == MT_MISSION_NONE)) {
+        (m->do_cmd < 1u || m->do_cmd >= m->total ||
+         (m->kind[m->do_cmd] != MT_MISSION_KIND_DO && m->kind[m->do_cmd] != MT_MISSION_KIND_TAG) ||
+         m->nav == MT_MISSION_NONE || m->do_cmd != m->do_idx)) {
+        abort();
+    }
+    if (m->nav != MT_MISSION_NONE && m->nav != m->nav_idx) {
+        abort();
+    }
+    if (m->nav_idx != MT_MISSION_NONE &&
+        (m->nav_idx < 1u || m->nav_idx >= m->total || m->kind[m->nav_idx] != MT_MISSION_KIND_NAV)) {
         abort();
     }
     for (i = 1u; i < m->total; i++) {

@@ -3,27 +3,22 @@
  * @file mission.c
  * @brief Mission-command sequencer (see mt/mission.h for the operating rules).
  *
- * Execution is one walk over the list (m->wpos) that counts jumps as it
- * passes them. The nav cursor looks ahead from the walk position with the
- * committed counters (mt_mission_next_nav, pure); the do cursor then moves the
- * walk through the do commands before that nav command; when the nav command
- * completes, the walk is fast-forwarded past it (dropping the do commands not
- * started). Validation guarantees that no loop lacks a nav command, so a walk
- * from any position to the next nav command visits each jump at most once:
- * the look-ahead and the walk therefore see the same counter values.
+ * The sequencer follows AP_Mission's update step function by function (the
+ * header states the rules): advance = advance_current_nav_cmd, do_search =
+ * advance_current_do_cmd, take_cmd / peek_cmd = get_next_cmd with and without
+ * counting, preload = the stopped branch of set_current_cmd. Validation
+ * guarantees that no loop lacks a nav command, so a walk to the next nav
+ * command passes each jump at most once: set-current's look-ahead (look_nav)
+ * and the counting walk after it decide every jump the same way.
  */
 #include "mt/mission.h"
 
 #include "mt_mission_invoke.h"
 
-/* Command table flags. */
-#define F_LOC 0x01u  /* uses x/y/z as a location: global frame, lat/lon range */
-#define F_NAN3 0x02u /* param 3 may be NaN */
-#define F_NAN4 0x04u /* param 4 may be NaN */
-#define F_NN1 0x08u  /* param 1 >= 0 */
-#define F_NN2 0x10u  /* param 2 >= 0 */
-#define F_INT1 0x20u /* param 1 is an integer */
-#define F_INT2 0x40u /* param 2 is an integer */
+/* The command table's rows (MT_MISSION_CMD_ROWS, sorted by id), N_CMDS and the F_* flags,
+ * generated from MAVLink's definitions by tools/mavcmd/gen_mav_cmds.py: every command
+ * ArduPilot's mission loader accepts. */
+#include "mt_mission_cmds.h"
 
 typedef struct {
     uint16_t id;
@@ -31,78 +26,10 @@ typedef struct {
     uint8_t flags;
 } cmd_info_t;
 
-#define NAV MT_MISSION_KIND_NAV
-#define DO MT_MISSION_KIND_DO
-
 uint8_t mt_mission_scratch_safe[MT_CFG_MISSION_MAX_CMDS];
 uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
 
-#define N_CMDS 61u
-
-/* Commands a vehicle needs (MAVLink common + ArduPilot mission subset). */
-static const cmd_info_t k_cmds[N_CMDS] = {
-    {16u, NAV, F_LOC | F_NAN4 | F_NN1 | F_NN2}, /* WAYPOINT */
-    {17u, NAV, F_LOC | F_NAN4},                 /* LOITER_UNLIM */
-    {18u, NAV, F_LOC | F_NN1},                  /* LOITER_TURNS */
-    {19u, NAV, F_LOC | F_NN1},                  /* LOITER_TIME */
-    {20u, NAV, 0u},                             /* RETURN_TO_LAUNCH */
-    {21u, NAV, F_LOC | F_NAN4},                 /* LAND */
-    {22u, NAV, F_LOC | F_NAN4},                 /* TAKEOFF */
-    {30u, NAV, F_LOC},                          /* CONTINUE_AND_CHANGE_ALT */
-    {31u, NAV, F_LOC},                          /* LOITER_TO_ALT */
-    {82u, NAV, F_LOC | F_NN1},                  /* SPLINE_WAYPOINT */
-    {83u, NAV, 0u},                             /* ALTITUDE_WAIT */
-    {84u, NAV, F_LOC | F_NAN4},                 /* VTOL_TAKEOFF */
-    {85u, NAV, F_LOC | F_NAN3 | F_NAN4},        /* VTOL_LAND */
-    {92u, NAV, 0u},                             /* GUIDED_ENABLE */
-    {93u, NAV, 0u},                             /* DELAY */
-    {94u, NAV, F_LOC},                          /* PAYLOAD_PLACE */
-    {112u, DO, F_NN1},                          /* CONDITION_DELAY */
-    {113u, DO, 0u},                             /* CONDITION_CHANGE_ALT */
-    {114u, DO, F_NN1},                          /* CONDITION_DISTANCE */
-    {115u, DO, F_NN2},                          /* CONDITION_YAW (special) */
-    {176u, DO, 0u},                             /* DO_SET_MODE */
-    {177u, MT_MISSION_KIND_JUMP, 0u},           /* DO_JUMP (special) */
-    {178u, DO, F_INT1},                         /* DO_CHANGE_SPEED (special) */
-    {179u, DO, F_LOC},                          /* DO_SET_HOME (special) */
-    {181u, DO, F_INT1 | F_NN1},                 /* DO_SET_RELAY */
-    {182u, DO, F_INT1 | F_NN1 | F_INT2 | F_NN2}, /* DO_REPEAT_RELAY */
-    {183u, DO, F_INT1 | F_INT2 | F_NN2},        /* DO_SET_SERVO (special) */
-    {184u, DO, F_INT1 | F_NN1 | F_INT2 | F_NN2}, /* DO_REPEAT_SERVO */
-    {188u, DO, F_LOC},                          /* DO_RETURN_PATH_START */
-    {189u, DO, F_LOC},                          /* DO_LAND_START */
-    {191u, DO, F_LOC},                          /* DO_GO_AROUND */
-    {194u, DO, 0u},                             /* DO_SET_REVERSE */
-    {195u, DO, F_LOC},                          /* DO_SET_ROI_LOCATION */
-    {197u, DO, 0u},                             /* DO_SET_ROI_NONE */
-    {201u, DO, F_LOC},                          /* DO_SET_ROI */
-    {202u, DO, 0u},                             /* DO_DIGICAM_CONFIGURE */
-    {203u, DO, 0u},                             /* DO_DIGICAM_CONTROL */
-    {205u, DO, 0u},                             /* DO_MOUNT_CONTROL */
-    {206u, DO, F_NN1},                          /* DO_SET_CAM_TRIGG_DIST */
-    {207u, DO, 0u},                             /* DO_FENCE_ENABLE */
-    {208u, DO, 0u},                             /* DO_PARACHUTE */
-    {210u, DO, 0u},                             /* DO_INVERTED_FLIGHT */
-    {211u, DO, 0u},                             /* DO_GRIPPER */
-    {212u, DO, 0u},                             /* DO_AUTOTUNE_ENABLE */
-    {213u, NAV, 0u},                            /* NAV_SET_YAW_SPEED */
-    {214u, DO, F_NN1},                          /* DO_SET_RESUME_REPEAT_DIST */
-    {215u, DO, 0u},                             /* DO_SPRAYER */
-    {216u, DO, 0u},                             /* DO_SEND_SCRIPT_MESSAGE */
-    {217u, DO, 0u},                             /* DO_AUX_FUNCTION */
-    {222u, DO, 0u},                             /* DO_GUIDED_LIMITS */
-    {223u, DO, 0u},                             /* DO_ENGINE_CONTROL */
-    {600u, MT_MISSION_KIND_TAG, F_INT1 | F_NN1}, /* JUMP_TAG (special) */
-    {601u, MT_MISSION_KIND_JUMP, 0u},           /* DO_JUMP_TAG (special) */
-    {1000u, DO, 0u},                            /* DO_GIMBAL_MANAGER_PITCHYAW */
-    {2000u, DO, 0u},                            /* IMAGE_START_CAPTURE */
-    {2001u, DO, 0u},                            /* IMAGE_STOP_CAPTURE */
-    {2500u, DO, 0u},                            /* VIDEO_START_CAPTURE */
-    {2501u, DO, 0u},                            /* VIDEO_STOP_CAPTURE */
-    {3000u, DO, 0u},                            /* DO_VTOL_TRANSITION */
-    {42702u, NAV, 0u},                          /* NAV_SCRIPT_TIME */
-    {42703u, NAV, 0u},                          /* NAV_ATTITUDE_TIME */
-};
+static const cmd_info_t k_cmds[N_CMDS] = {MT_MISSION_CMD_ROWS};
 
 #if !defined(__FRAMAC__)
 _Static_assert((sizeof(k_cmds) / sizeof(k_cmds[0])) == N_CMDS, "N_CMDS must match the table");
@@ -161,7 +88,8 @@ void mt_mission_init(mt_mission_t *m, mt_mission_cmd_fn_t start_fn, mt_mission_c
     m->do_done = 0u;
     m->nav = MT_MISSION_NONE;
     m->do_cmd = MT_MISSION_NONE;
-    m->wpos = 0u;
+    m->nav_idx = MT_MISSION_NONE;
+    m->do_idx = MT_MISSION_NONE;
     m->prev_nav = MT_MISSION_NONE;
     m->completions = 0u;
     m->start_fn = start_fn;
@@ -172,16 +100,20 @@ void mt_mission_init(mt_mission_t *m, mt_mission_cmd_fn_t start_fn, mt_mission_c
 
 /* ------------------------------------------------------------ validation */
 
-/* Frames: 0 GLOBAL, 3 GLOBAL_RELATIVE_ALT, 5 GLOBAL_INT, 6 GLOBAL_RELATIVE_ALT_INT,
- * 10 GLOBAL_TERRAIN_ALT, 11 GLOBAL_TERRAIN_ALT_INT; 2 MISSION only without a location. */
+/* Frames ArduPilot's loader accepts for a command it stores as a location (F_LOC): 0 GLOBAL,
+ * 2 MISSION (read as GLOBAL: altitude above mean sea level), 5 GLOBAL_INT, 3 and 6 relative to
+ * home, 10 and 11 above terrain. The frame of any other command is not looked at (AP ignores
+ * it; the file layer warns). */
 /*@ assigns \nothing; */
 static int frame_ok(uint8_t frame, uint8_t flags)
 {
-    if ((frame == 0u) || (frame == 3u) || (frame == 5u) || (frame == 6u) || (frame == 10u) ||
-        (frame == 11u)) {
+    if ((flags & F_LOC) == 0u) {
         return 1;
     }
-    return ((frame == 2u) && ((flags & F_LOC) == 0u)) ? 1 : 0;
+    return ((frame == 0u) || (frame == 2u) || (frame == 3u) || (frame == 5u) || (frame == 6u) ||
+            (frame == 10u) || (frame == 11u))
+               ? 1
+               : 0;
 }
 
 /*@ assigns \nothing;
@@ -568,9 +500,11 @@ static void put_cmd(mt_mission_t *m, uint16_t i, const mt_mission_cmd_t *c, uint
     requires counters: \forall integer j; 1 <= j < n ==> (m->kind[j] == MT_MISSION_KIND_JUMP ==>
                 (m->repeat[j] >= 0 ==> 0 <= m->count[j] <= m->repeat[j]) &&
                 (m->repeat[j] < 0 ==> m->count[j] == 0));
-    assigns m->total, m->generation, m->state, m->do_done, m->nav, m->do_cmd, m->wpos, m->prev_nav;
-    ensures m->total == n && m->state == MT_MISSION_STOPPED && m->wpos == 1 && m->do_done == 0;
+    assigns m->total, m->generation, m->state, m->do_done, m->nav, m->do_cmd, m->nav_idx, m->do_idx,
+            m->prev_nav;
+    ensures m->total == n && m->state == MT_MISSION_STOPPED && m->do_done == 0;
     ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->prev_nav == MT_MISSION_NONE;
+    ensures m->nav_idx == MT_MISSION_NONE && m->do_idx == MT_MISSION_NONE;
     ensures m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF;
     ensures tables: MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m);
 */
@@ -584,7 +518,8 @@ static void reset_cursors(mt_mission_t *m, uint16_t n)
     m->do_done = 0u;
     m->nav = MT_MISSION_NONE;
     m->do_cmd = MT_MISSION_NONE;
-    m->wpos = 1u;
+    m->nav_idx = MT_MISSION_NONE;
+    m->do_idx = MT_MISSION_NONE;
     m->prev_nav = MT_MISSION_NONE;
 }
 
@@ -639,9 +574,9 @@ static void put_all(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
     requires \separated(cmds + (0 .. n - 1), m);
     assigns m->cmd[0 .. n - 1], m->kind[0 .. n - 1], m->target[0 .. n - 1], m->repeat[0 .. n - 1],
             m->count[0 .. n - 1], m->total, m->generation, m->state, m->do_done, m->nav,
-            m->do_cmd, m->wpos, m->prev_nav;
+            m->do_cmd, m->nav_idx, m->do_idx, m->prev_nav;
     ensures MtMissionInv(m);
-    ensures m->total == n && m->state == MT_MISSION_STOPPED && m->wpos == 1;
+    ensures m->total == n && m->state == MT_MISSION_STOPPED && m->nav_idx == MT_MISSION_NONE;
     ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
     ensures m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF;
 */
@@ -682,28 +617,34 @@ mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint1
 
 /* ------------------------------------------------------------ execution walk */
 
-/* Where a walk goes from a jump at p, without counting. */
+/* Where a resolution goes from a jump at p, without counting; fresh: as if
+ * every counter were 0 (set-current's look-ahead when it resets them). */
 /*@ requires MtMissionInv(m);
     requires MtMissionIdx(m, p) && m->kind[p] == MT_MISSION_KIND_JUMP;
     assigns \nothing;
     ensures 1 <= \result <= m->total;
 */
-static uint16_t jump_peek(const mt_mission_t *m, uint16_t p)
+static uint16_t jump_peek(const mt_mission_t *m, uint16_t p, int fresh)
 {
-    if ((m->repeat[p] < 0) || (m->count[p] < m->repeat[p])) {
+    int16_t used = m->count[p];
+
+    if (fresh != 0) {
+        used = 0;
+    }
+
+    if ((m->repeat[p] < 0) || (used < m->repeat[p])) {
         return m->target[p];
     }
     return (uint16_t)(p + 1u);
 }
 
-/* Where a walk goes from a jump at p, counting: taken r times, then fall
- * through and reset. */
+/* Where the nav advance goes from a jump at p, counting: taken r times, then
+ * fall through and reset. */
 /*@ requires MtMissionInv(m);
     requires MtMissionIdx(m, p) && m->kind[p] == MT_MISSION_KIND_JUMP;
     assigns m->count[p];
     ensures MtMissionInv(m);
     ensures 1 <= \result <= m->total;
-    ensures counter_bound: m->repeat[p] >= 0 ==> 0 <= m->count[p] <= m->repeat[p];
 */
 static uint16_t jump_take(mt_mission_t *m, uint16_t p)
 {
@@ -718,76 +659,111 @@ static uint16_t jump_take(mt_mission_t *m, uint16_t p)
     return (uint16_t)(p + 1u);
 }
 
+/* First command at or after p that is not a jump, jumps followed without
+ * counting; total at the end (or when the bound is hit: impossible for a
+ * validated mission, whose jump-only paths are acyclic). */
+/*@ requires MtMissionInv(m) && 1 <= p <= m->total;
+    assigns \nothing;
+    ensures 1 <= \result <= m->total;
+    ensures \result < m->total ==> m->kind[\result] != MT_MISSION_KIND_JUMP;
+*/
+static uint16_t peek_cmd(const mt_mission_t *m, uint16_t p)
+{
+    uint16_t q = p;
+    uint32_t steps;
+
+    /*@ loop invariant 0 <= steps <= m->total;
+        loop invariant 1 <= q <= m->total;
+        loop assigns steps, q;
+        loop variant m->total - steps;
+    */
+    for (steps = 0u; steps < m->total; steps++) {
+        if ((q >= m->total) || (m->kind[q] != MT_MISSION_KIND_JUMP)) {
+            return q;
+        }
+        q = jump_peek(m, q, 0);
+    }
+    return m->total;
+}
+
+/* The same, counting every jump passed [get_next_cmd with increment]. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && 1 <= p <= m->total;
+    assigns m->count[0 .. m->total - 1];
+    ensures MtMissionInv(m);
+    ensures 1 <= \result <= m->total;
+    ensures \result < m->total ==> m->kind[\result] != MT_MISSION_KIND_JUMP;
+*/
+static uint16_t take_cmd(mt_mission_t *m, uint16_t p)
+{
+    uint16_t q = p;
+    uint32_t steps;
+
+    /*@ loop invariant 0 <= steps <= m->total;
+        loop invariant 1 <= q <= m->total;
+        loop invariant MtMissionInv(m);
+        loop assigns steps, q, m->count[0 .. m->total - 1];
+        loop variant m->total - steps;
+    */
+    for (steps = 0u; steps < m->total; steps++) {
+        if ((q >= m->total) || (m->kind[q] != MT_MISSION_KIND_JUMP)) {
+            return q;
+        }
+        q = jump_take(m, q);
+    }
+    return m->total;
+}
+
+/* The nav command the walk from p reaches first, jumps followed without
+ * counting (fresh: with every counter 0); total at the end; MT_MISSION_NONE
+ * when the bound is hit. Visits at most total commands. */
+/*@ requires MtMissionInv(m) && 1 <= p < m->total;
+    assigns \nothing;
+    ensures \result == m->total || \result == MT_MISSION_NONE ||
+            (MtMissionIdx(m, \result) && m->kind[\result] == MT_MISSION_KIND_NAV);
+*/
+static uint16_t look_nav(const mt_mission_t *m, uint16_t p, int fresh)
+{
+    uint16_t q = p;
+    uint32_t steps;
+
+    /*@ loop invariant 0 <= steps <= m->total;
+        loop invariant 1 <= q <= m->total;
+        loop assigns steps, q;
+        loop variant m->total - steps;
+    */
+    for (steps = 0u; steps < m->total; steps++) {
+        if (q >= m->total) {
+            return m->total;
+        }
+        if (m->kind[q] == MT_MISSION_KIND_NAV) {
+            return q;
+        }
+        if (m->kind[q] == MT_MISSION_KIND_JUMP) {
+            q = jump_peek(m, q, fresh);
+        } else {
+            q++;
+        }
+    }
+    return MT_MISSION_NONE;
+}
+
 mt_status_t mt_mission_next_nav(const mt_mission_t *m, uint16_t from, uint16_t *out)
 {
-    uint16_t p = from;
-    uint32_t steps;
+    uint16_t n;
 
     *out = MT_MISSION_NONE;
     if ((from < 1u) || (from >= m->total)) {
         return MT_E_INVALID;
     }
-    /*@ loop invariant 0 <= steps <= m->total;
-        loop invariant 1 <= p <= m->total;
-        loop invariant *out == MT_MISSION_NONE;
-        loop assigns steps, p;
-        loop variant m->total - steps;
-    */
-    for (steps = 0u; steps < m->total; steps++) {
-        if (p >= m->total) {
-            return MT_E_EMPTY;
-        }
-        if (m->kind[p] == MT_MISSION_KIND_NAV) {
-            *out = p;
-            return MT_OK;
-        }
-        if (m->kind[p] == MT_MISSION_KIND_JUMP) {
-            p = jump_peek(m, p);
-        } else {
-            p++;
-        }
+    n = look_nav(m, from, 0);
+    if (n == MT_MISSION_NONE) {
+        return MT_E_MISSION_LOOP;
     }
-    return MT_E_MISSION_LOOP;
-}
-
-/* Move the walk from wpos, counting jumps, to the first nav command (or also
- * the first do command when stop_at_do); returns its index, or total at the
- * end. Bounded by the command count. */
-/*@ requires MtMissionInv(m) && m->total >= 2;
-    assigns m->wpos, m->count[0 .. m->total - 1];
-    ensures MtMissionInv(m);
-    ensures 1 <= \result <= m->total && m->wpos == \result;
-    ensures \result < m->total ==> m->kind[\result] == MT_MISSION_KIND_NAV ||
-        (stop_at_do != 0 && m->kind[\result] == MT_MISSION_KIND_DO);
-*/
-static uint16_t walk(mt_mission_t *m, int stop_at_do)
-{
-    uint16_t p = m->wpos;
-    uint32_t steps;
-
-    /*@ loop invariant 0 <= steps <= m->total;
-        loop invariant 1 <= p <= m->total;
-        loop invariant MtMissionInv(m);
-        loop assigns steps, p, m->count[0 .. m->total - 1];
-        loop variant m->total - steps;
-    */
-    for (steps = 0u; steps < m->total; steps++) {
-        if (p >= m->total) {
-            break;
-        }
-        if ((m->kind[p] == MT_MISSION_KIND_NAV) ||
-            ((stop_at_do != 0) && (m->kind[p] == MT_MISSION_KIND_DO))) {
-            m->wpos = p;
-            return p;
-        }
-        if (m->kind[p] == MT_MISSION_KIND_JUMP) {
-            p = jump_take(m, p);
-        } else {
-            p++;
-        }
+    if (n >= m->total) {
+        return MT_E_EMPTY;
     }
-    m->wpos = m->total;
-    return m->total;
+    *out = n;
+    return MT_OK;
 }
 
 /* Transition into COMPLETE: the only call of the complete callback. */
@@ -809,78 +785,210 @@ static void finish(mt_mission_t *m)
     mt_mission_invoke_done(m->complete_fn, m->ctx);
 }
 
-/* The active nav command completed (or refused to start): drop the do
- * command, move the walk past the nav command. */
-/*@ requires MtMissionInv(m) && m->total >= 2 && m->nav != MT_MISSION_NONE;
-    assigns m->do_cmd, m->do_done, m->prev_nav, m->nav, m->wpos, m->count[0 .. m->total - 1];
+/* No active nav or do command; the do search starts over. */
+/*@ requires MtMissionInv(m);
+    assigns m->nav, m->do_cmd, m->do_idx, m->do_done;
     ensures MtMissionInv(m);
-    ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+    ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->do_idx == MT_MISSION_NONE;
+    ensures m->do_done == 0;
 */
-static void nav_done(mt_mission_t *m)
+static void drop_both(mt_mission_t *m)
 {
-    uint16_t r;
-
     m->do_cmd = MT_MISSION_NONE;
+    m->do_idx = MT_MISSION_NONE;
     m->do_done = 0u;
-    m->prev_nav = m->nav;
     m->nav = MT_MISSION_NONE;
-    r = walk(m, 0);
-    if (r < m->total) {
-        m->wpos = (uint16_t)(r + 1u);
+}
+
+/* Do command (or JUMP_TAG) d becomes the active one, without a start. */
+/*@ requires MtMissionInv(m) && MtMissionIdx(m, d);
+    requires m->kind[d] == MT_MISSION_KIND_DO || m->kind[d] == MT_MISSION_KIND_TAG;
+    requires m->nav != MT_MISSION_NONE;
+    assigns m->do_cmd, m->do_idx;
+    ensures MtMissionInv(m) && m->do_cmd == d && m->do_idx == d;
+*/
+static void set_do(mt_mission_t *m, uint16_t d)
+{
+    m->do_idx = d;
+    m->do_cmd = d;
+}
+
+/* Start the active do command: a JUMP_TAG is handled here (no callback); the
+ * start result of a do command is ignored [start_command]. */
+/*@ requires MtMissionInv(m) && m->do_cmd != MT_MISSION_NONE;
+    assigns MtPortNow;
+*/
+static void start_do(mt_mission_t *m)
+{
+    if (m->kind[m->do_cmd] == MT_MISSION_KIND_DO) {
+        (void)mt_mission_invoke_cmd(m->start_fn, m->ctx, m->do_cmd, &m->cmd[m->do_cmd]);
     }
 }
 
-/* No active do command; the do walk starts again. */
-/*@ requires MtMissionInv(m);
-    assigns m->do_cmd, m->do_done;
-    ensures MtMissionInv(m) && m->do_cmd == MT_MISSION_NONE && m->do_done == 0;
+/* Verify the active do command: a JUMP_TAG verifies at once [verify_command]. */
+/*@ requires MtMissionInv(m) && m->do_cmd != MT_MISSION_NONE;
+    assigns MtPortNow;
 */
-static void drop_do(mt_mission_t *m)
+static bool verify_do(mt_mission_t *m)
 {
-    m->do_cmd = MT_MISSION_NONE;
-    m->do_done = 0u;
+    if (m->kind[m->do_cmd] != MT_MISSION_KIND_DO) {
+        return true;
+    }
+    return mt_mission_invoke_cmd(m->verify_fn, m->ctx, m->do_cmd, &m->cmd[m->do_cmd]);
 }
 
-/* Nav command p becomes the active one (no do command is active). */
+/* Nav command p is set (nav_idx) and, when start is true, active. */
 /*@ requires MtMissionInv(m) && MtMissionIdx(m, p) && m->kind[p] == MT_MISSION_KIND_NAV;
-    requires m->do_cmd == MT_MISSION_NONE;
-    assigns m->nav;
-    ensures MtMissionInv(m) && m->nav == p;
+    requires m->nav == MT_MISSION_NONE;
+    assigns m->nav, m->nav_idx, m->prev_nav;
+    ensures MtMissionInv(m) && m->nav_idx == p;
+    ensures started ==> m->nav == p;
+    ensures !started ==> m->nav == MT_MISSION_NONE;
 */
-static void set_nav(mt_mission_t *m, uint16_t p)
+static void set_nav(mt_mission_t *m, uint16_t p, bool started)
 {
+    m->prev_nav = m->nav_idx;
+    m->nav_idx = p;
+    if (started) {
+        m->nav = p;
+    }
+}
+
+/* Do command (or JUMP_TAG) r is the one the walk passed first: recorded, not yet active. */
+/*@ requires MtMissionInv(m) && MtMissionIdx(m, r);
+    requires m->kind[r] != MT_MISSION_KIND_NAV && m->kind[r] != MT_MISSION_KIND_JUMP;
+    requires m->do_cmd == MT_MISSION_NONE;
+    assigns m->do_idx;
+    ensures MtMissionInv(m) && m->do_idx == r;
+*/
+static void note_do(mt_mission_t *m, uint16_t r)
+{
+    m->do_idx = r;
+}
+
+/* No nav command is set (the stopped walk found none). */
+/*@ requires MtMissionInv(m) && m->nav == MT_MISSION_NONE;
+    assigns m->nav_idx;
+    ensures MtMissionInv(m) && m->nav_idx == MT_MISSION_NONE;
+*/
+static void forget_nav(mt_mission_t *m)
+{
+    m->nav_idx = MT_MISSION_NONE;
+}
+
+/* Nav command p becomes the active one without a start (the stopped walk). */
+/*@ requires MtMissionInv(m) && MtMissionIdx(m, p) && m->kind[p] == MT_MISSION_KIND_NAV;
+    requires m->nav == MT_MISSION_NONE;
+    assigns m->nav, m->nav_idx;
+    ensures MtMissionInv(m) && m->nav == p && m->nav_idx == p;
+*/
+static void load_nav(mt_mission_t *m, uint16_t p)
+{
+    m->nav_idx = p;
     m->nav = p;
 }
 
-/* Load the next nav command (none is active): one start attempt; a refused
- * start consumes the command; the end of the walk completes the mission. */
+/* A nav command has just become active: the do command d recorded on the way (do_idx)
+ * becomes active with it; with none, there is no do command left before it. */
+/*@ requires MtMissionInv(m) && m->nav != MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+    requires d == MT_MISSION_NONE || d == m->do_idx;
+    assigns m->do_cmd, m->do_done;
+    ensures MtMissionInv(m);
+    ensures d != MT_MISSION_NONE ==> m->do_cmd == d;
+    ensures d == MT_MISSION_NONE ==> m->do_cmd == MT_MISSION_NONE && m->do_done == 1;
+*/
+static void attach_do(mt_mission_t *m, uint16_t d)
+{
+    if (d != MT_MISSION_NONE) {
+        m->do_cmd = d;
+    } else {
+        m->do_done = 1u;
+    }
+}
+
+/* The nav advance visits at most the command count plus MT_CFG_MISSION_ADVANCE_EXTRA (255)
+ * commands. AP's guard is 255 commands in all (max_loops), which a do stretch of 255
+ * commands before a nav command already exhausts (AP then stays RUNNING with nothing
+ * loaded: A-1). A walk with no refused start reaches a nav command within the command count
+ * (no loop lacks one), so the extra commands are for nav starts refused inside a loop. */
+#define ADVANCE_EXTRA MT_CFG_MISSION_ADVANCE_EXTRA
+
+/* The nav advance from p [advance_current_nav_cmd]: returns 1 when a nav
+ * command is active, 0 at the end of the list or when the bound is reached
+ * without one (the caller completes the mission: A-1). The first do
+ * command passed is started at once and becomes active with the nav command
+ * (the invariant ties an active do command to an active nav command). */
 /*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
-    requires m->nav == MT_MISSION_NONE;
-    assigns m->state, m->nav, m->do_cmd, m->do_done, m->prev_nav, m->wpos, m->completions,
+    requires 1 <= p <= m->total;
+    assigns m->nav, m->nav_idx, m->prev_nav, m->do_cmd, m->do_idx, m->do_done,
             m->count[0 .. m->total - 1], MtPortNow;
+    ensures MtMissionInv(m);
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> m->nav != MT_MISSION_NONE;
+    ensures \result == 0 ==> m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+*/
+static int advance(mt_mission_t *m, uint16_t p)
+{
+    uint16_t q = p;
+    uint16_t d = MT_MISSION_NONE;
+    uint32_t k;
+
+    drop_both(m);
+    /*@ loop invariant 0 <= k <= m->total + ADVANCE_EXTRA;
+        loop invariant 1 <= q <= m->total;
+        loop invariant MtMissionInv(m) && m->state == MT_MISSION_RUNNING;
+        loop invariant m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->do_done == 0;
+        loop invariant d == MT_MISSION_NONE || (d == m->do_idx && MtMissionIdx(m, d));
+        loop assigns k, q, d, m->nav, m->nav_idx, m->prev_nav, m->do_cmd, m->do_idx, m->do_done,
+                     m->count[0 .. m->total - 1], MtPortNow;
+        loop variant m->total + ADVANCE_EXTRA - k;
+    */
+    for (k = 0u; k < ((uint32_t)m->total + ADVANCE_EXTRA); k++) {
+        const uint16_t r = take_cmd(m, q);
+
+        if (r >= m->total) {
+            return 0;
+        }
+        if (m->kind[r] == MT_MISSION_KIND_NAV) {
+            const bool ok = mt_mission_invoke_cmd(m->start_fn, m->ctx, r, &m->cmd[r]);
+            set_nav(m, r, ok);
+            if (ok) {
+                attach_do(m, d);
+                return 1;
+            }
+        } else if (d == MT_MISSION_NONE) {
+            d = r;
+            note_do(m, r);
+            if (m->kind[r] == MT_MISSION_KIND_DO) {
+                (void)mt_mission_invoke_cmd(m->start_fn, m->ctx, r, &m->cmd[r]);
+            }
+        } else {
+            /* a later do command: passed, not started */
+        }
+        q = (uint16_t)(r + 1u);
+    }
+    return 0;
+}
+
+/* Drop both commands and run the nav advance from p; the end completes the
+ * mission [set_current_cmd while running]. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
+    requires 1 <= p <= m->total;
+    assigns m->state, m->nav, m->nav_idx, m->prev_nav, m->do_cmd, m->do_idx, m->do_done,
+            m->completions, m->count[0 .. m->total - 1], MtPortNow;
     ensures MtMissionInv(m);
     ensures m->state == MT_MISSION_RUNNING || m->state == MT_MISSION_COMPLETE;
     ensures complete_once: m->completions == \old(m->completions) + (m->state == MT_MISSION_COMPLETE ? 1 : 0) ||
         \old(m->completions) == 0xFFFFFFFF;
 */
-static void advance(mt_mission_t *m)
+static void advance_or_finish(mt_mission_t *m, uint16_t p)
 {
-    uint16_t n = MT_MISSION_NONE;
-
-    drop_do(m);
-    if (mt_mission_next_nav(m, m->wpos, &n) != MT_OK) {
+    if (advance(m, p) == 0) {
         finish(m);
-        return;
-    }
-    if (mt_mission_invoke_cmd(m->start_fn, m->ctx, n, &m->cmd[n])) {
-        set_nav(m, n);
-    } else {
-        set_nav(m, n);
-        nav_done(m);
     }
 }
 
-/* Every jump counter back to 0 (the walk starts again from the top). */
+/* Every jump counter back to 0. */
 /*@ requires MtMissionInv(m) && m->total >= 2;
     assigns m->count[0 .. m->total - 1];
     ensures MtMissionInv(m);
@@ -899,33 +1007,19 @@ static void zero_counts(mt_mission_t *m)
     }
 }
 
-/* Cursors back to the top: no nav or do command active, the walk starts at index 1. */
+/* Counters and cursors back to the top [reset]. */
 /*@ requires MtMissionInv(m) && m->total >= 2;
-    assigns m->wpos, m->nav, m->do_cmd, m->do_done, m->prev_nav;
+    assigns m->count[0 .. m->total - 1], m->nav, m->nav_idx, m->do_cmd, m->do_idx, m->do_done,
+            m->prev_nav;
     ensures MtMissionInv(m);
-    ensures m->wpos == 1 && m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
-*/
-static void reset_walk(mt_mission_t *m)
-{
-    m->wpos = 1u;
-    m->nav = MT_MISSION_NONE;
-    m->do_cmd = MT_MISSION_NONE;
-    m->do_done = 0u;
-    m->prev_nav = MT_MISSION_NONE;
-}
-
-/* Counters and cursors back to the top (start, set_current(0)). Each store group is a helper,
- * so the invariant is carried across in a small context (the one-function version left its
- * ensures at 20 s under load). */
-/*@ requires MtMissionInv(m) && m->total >= 2;
-    assigns m->count[0 .. m->total - 1], m->wpos, m->nav, m->do_cmd, m->do_done, m->prev_nav;
-    ensures MtMissionInv(m);
-    ensures m->wpos == 1 && m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+    ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->nav_idx == MT_MISSION_NONE;
 */
 static void rewind_walk(mt_mission_t *m)
 {
     zero_counts(m);
-    reset_walk(m);
+    drop_both(m);
+    m->nav_idx = MT_MISSION_NONE;
+    m->prev_nav = MT_MISSION_NONE;
 }
 
 mt_status_t mt_mission_start(mt_mission_t *m)
@@ -935,7 +1029,7 @@ mt_status_t mt_mission_start(mt_mission_t *m)
     }
     rewind_walk(m);
     m->state = MT_MISSION_RUNNING;
-    advance(m);
+    advance_or_finish(m, 1u);
     return MT_OK;
 }
 
@@ -946,22 +1040,6 @@ mt_status_t mt_mission_stop(mt_mission_t *m)
     }
     m->state = MT_MISSION_STOPPED;
     return MT_OK;
-}
-
-/* Start the active nav command again; a refusal completes it and loads the next. */
-/*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
-    requires m->nav != MT_MISSION_NONE;
-    assigns m->state, m->nav, m->do_cmd, m->do_done, m->prev_nav, m->wpos, m->completions,
-            m->count[0 .. m->total - 1], MtPortNow;
-    ensures MtMissionInv(m);
-    ensures m->state == MT_MISSION_RUNNING || m->state == MT_MISSION_COMPLETE;
-*/
-static void restart_nav(mt_mission_t *m)
-{
-    if (!mt_mission_invoke_cmd(m->start_fn, m->ctx, m->nav, &m->cmd[m->nav])) {
-        nav_done(m);
-        advance(m);
-    }
 }
 
 /* A state change that keeps the invariant (COMPLETE is entered by finish only). */
@@ -975,31 +1053,49 @@ static void set_state(mt_mission_t *m, uint8_t st)
     m->state = st;
 }
 
-/* Start the active do command again; a refusal counts it as done. */
-/*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
-    requires m->do_cmd != MT_MISSION_NONE;
-    assigns m->do_cmd, MtPortNow;
+/* Not running: walk from p, counting jumps, to the first nav command; it and
+ * the first do command passed become active without a start [the stopped
+ * branch of set_current_cmd]. The caller has seen a nav command ahead; if the
+ * walk still ends, nothing is active and no nav command is set. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && m->state != MT_MISSION_RUNNING;
+    requires 1 <= p < m->total;
+    assigns m->nav, m->nav_idx, m->do_cmd, m->do_idx, m->do_done, m->count[0 .. m->total - 1];
     ensures MtMissionInv(m);
 */
-static void restart_do(mt_mission_t *m)
+static void preload(mt_mission_t *m, uint16_t p)
 {
-    if (!mt_mission_invoke_cmd(m->start_fn, m->ctx, m->do_cmd, &m->cmd[m->do_cmd])) {
-        m->do_cmd = MT_MISSION_NONE;
-    }
-}
+    uint16_t q = p;
+    uint16_t d = MT_MISSION_NONE;
+    uint32_t k;
 
-/* No active command; the walk continues at pos. */
-/*@ requires MtMissionInv(m) && m->total >= 2 && 1 <= pos < m->total;
-    assigns m->nav, m->do_cmd, m->do_done, m->wpos;
-    ensures MtMissionInv(m);
-    ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->do_done == 0 && m->wpos == pos;
-*/
-static void reposition(mt_mission_t *m, uint16_t pos)
-{
-    m->nav = MT_MISSION_NONE;
-    m->do_cmd = MT_MISSION_NONE;
-    m->do_done = 0u;
-    m->wpos = pos;
+    drop_both(m);
+    /*@ loop invariant 0 <= k <= m->total;
+        loop invariant 1 <= q <= m->total;
+        loop invariant MtMissionInv(m);
+        loop invariant m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->do_done == 0;
+        loop invariant d == MT_MISSION_NONE || (d == m->do_idx && MtMissionIdx(m, d));
+        loop assigns k, q, d, m->nav, m->nav_idx, m->do_cmd, m->do_idx, m->do_done,
+                     m->count[0 .. m->total - 1];
+        loop variant m->total - k;
+    */
+    for (k = 0u; k < m->total; k++) {
+        const uint16_t r = take_cmd(m, q);
+
+        if (r >= m->total) {
+            break;
+        }
+        if (m->kind[r] == MT_MISSION_KIND_NAV) {
+            load_nav(m, r);
+            attach_do(m, d);
+            return;
+        }
+        if (d == MT_MISSION_NONE) {
+            d = r;
+            note_do(m, r);
+        }
+        q = (uint16_t)(r + 1u);
+    }
+    forget_nav(m);
 }
 
 mt_status_t mt_mission_resume(mt_mission_t *m)
@@ -1010,36 +1106,46 @@ mt_status_t mt_mission_resume(mt_mission_t *m)
     if (m->total < 2u) {
         return MT_E_EMPTY;
     }
-    if (m->state == MT_MISSION_COMPLETE) {
+    if ((m->state == MT_MISSION_COMPLETE) || (m->nav_idx == MT_MISSION_NONE)) {
         return mt_mission_start(m);
     }
     set_state(m, MT_MISSION_RUNNING);
-    if (m->nav == MT_MISSION_NONE) {
-        advance(m);
-        return MT_OK;
-    }
-    restart_nav(m);
-    if ((m->state == MT_MISSION_RUNNING) && (m->do_cmd != MT_MISSION_NONE)) {
-        restart_do(m);
+    if (m->do_cmd != MT_MISSION_NONE) {
+        advance_or_finish(m, m->do_cmd);
+    } else if (m->nav != MT_MISSION_NONE) {
+        advance_or_finish(m, m->nav);
+    } else {
+        /* no active command: the next update advances past nav_idx */
     }
     return MT_OK;
 }
 
 mt_status_t mt_mission_set_current(mt_mission_t *m, uint16_t i)
 {
+    uint16_t p = (uint16_t)((i == 0u) ? 1u : i);
+    int fresh = 0;
+
+    if ((i == 0u) || (m->state == MT_MISSION_COMPLETE)) {
+        fresh = 1;
+    }
+
     if (m->total < 2u) {
         return MT_E_EMPTY;
     }
     if (i >= m->total) {
         return MT_E_INVALID;
     }
-    if ((i == 0u) || (m->state == MT_MISSION_COMPLETE)) {
-        rewind_walk(m);
+    if ((m->state != MT_MISSION_RUNNING) && (look_nav(m, p, fresh) >= m->total)) {
+        return MT_E_EMPTY;
     }
-    reposition(m, (uint16_t)((i == 0u) ? 1u : i));
+    if (fresh != 0) {
+        zero_counts(m);
+        m->prev_nav = MT_MISSION_NONE;
+    }
     if (m->state == MT_MISSION_RUNNING) {
-        advance(m);
+        advance_or_finish(m, p);
     } else {
+        preload(m, p);
         set_state(m, MT_MISSION_STOPPED);
     }
     return MT_OK;
@@ -1047,41 +1153,80 @@ mt_status_t mt_mission_set_current(mt_mission_t *m, uint16_t i)
 
 mt_status_t mt_mission_restart_current(mt_mission_t *m)
 {
-    if ((m->state != MT_MISSION_RUNNING) || (m->nav == MT_MISSION_NONE)) {
+    if ((m->state != MT_MISSION_RUNNING) || (m->nav_idx == MT_MISSION_NONE)) {
         return MT_E_STATE;
     }
-    restart_nav(m);
+    advance_or_finish(m, m->nav_idx);
     return MT_OK;
 }
 
-/* Do cursor: verify the active do command, or start the next one before the
- * active nav command. */
+/* The do search [advance_current_do_cmd]: the next command after do_idx,
+ * jumps followed without counting, starts if it is a do command (or is a
+ * JUMP_TAG); a nav command or the end sets do_done. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && m->nav != MT_MISSION_NONE;
+    requires m->do_cmd == MT_MISSION_NONE;
+    assigns m->do_cmd, m->do_idx, m->do_done, MtPortNow;
+    ensures MtMissionInv(m);
+*/
+static void do_search(mt_mission_t *m)
+{
+    uint16_t from = (uint16_t)((m->do_idx == MT_MISSION_NONE) ? 1u : (m->do_idx + 1u));
+    uint16_t r;
+
+    if (m->do_done != 0u) {
+        return;
+    }
+    r = peek_cmd(m, from);
+    if ((r >= m->total) || (m->kind[r] == MT_MISSION_KIND_NAV)) {
+        m->do_done = 1u;
+        return;
+    }
+    set_do(m, r);
+    start_do(m);
+}
+
+/* The nav part of an update: verify the active nav command and advance when it verified (or
+ * advance when none is active); 0 when the mission completed. */
 /*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
-    requires m->nav != MT_MISSION_NONE;
-    assigns m->do_cmd, m->do_done, m->wpos, m->count[0 .. m->total - 1], MtPortNow;
+    assigns m->state, m->nav, m->nav_idx, m->prev_nav, m->do_cmd, m->do_idx, m->do_done,
+            m->completions, m->count[0 .. m->total - 1], MtPortNow;
+    ensures MtMissionInv(m);
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> m->state == MT_MISSION_RUNNING && m->nav != MT_MISSION_NONE &&
+        m->completions == \old(m->completions);
+    ensures \result == 0 ==> m->state == MT_MISSION_COMPLETE &&
+        (m->completions == \old(m->completions) + 1 || \old(m->completions) == 0xFFFFFFFF);
+*/
+static int nav_step(mt_mission_t *m)
+{
+    uint16_t from;
+
+    if (m->nav != MT_MISSION_NONE) {
+        if (!mt_mission_invoke_cmd(m->verify_fn, m->ctx, m->nav, &m->cmd[m->nav])) {
+            return 1;
+        }
+    }
+    from = (uint16_t)((m->nav_idx == MT_MISSION_NONE) ? 1u : (m->nav_idx + 1u));
+    if (advance(m, from) == 0) {
+        finish(m);
+        return 0;
+    }
+    return 1;
+}
+
+/* The do part of an update: verify the active do command, or run the do search. */
+/*@ requires MtMissionInv(m) && m->total >= 2 && m->nav != MT_MISSION_NONE;
+    assigns m->do_cmd, m->do_idx, m->do_done, MtPortNow;
     ensures MtMissionInv(m);
 */
 static void do_step(mt_mission_t *m)
 {
-    uint16_t r;
-
-    if (m->do_cmd != MT_MISSION_NONE) {
-        if (mt_mission_invoke_cmd(m->verify_fn, m->ctx, m->do_cmd, &m->cmd[m->do_cmd])) {
-            m->do_cmd = MT_MISSION_NONE;
-        }
-        return;
-    }
-    if (m->do_done != 0u) {
-        return;
-    }
-    r = walk(m, 1);
-    if ((r < m->total) && (m->kind[r] == MT_MISSION_KIND_DO)) {
-        m->wpos = (uint16_t)(r + 1u);
-        if (mt_mission_invoke_cmd(m->start_fn, m->ctx, r, &m->cmd[r])) {
-            m->do_cmd = r;
-        }
+    if (m->do_cmd == MT_MISSION_NONE) {
+        do_search(m);
+    } else if (verify_do(m)) {
+        m->do_cmd = MT_MISSION_NONE;
     } else {
-        m->do_done = 1u;
+        /* the active do command is still running */
     }
 }
 
@@ -1090,15 +1235,7 @@ mt_status_t mt_mission_update(mt_mission_t *m)
     if (m->state != MT_MISSION_RUNNING) {
         return MT_E_STATE;
     }
-    if (m->nav == MT_MISSION_NONE) {
-        advance(m);
-    } else if (mt_mission_invoke_cmd(m->verify_fn, m->ctx, m->nav, &m->cmd[m->nav])) {
-        nav_done(m);
-        advance(m);
-    } else {
-        /* the active nav command is still running */
-    }
-    if ((m->state == MT_MISSION_RUNNING) && (m->nav != MT_MISSION_NONE)) {
+    if (nav_step(m) != 0) {
         do_step(m);
     }
     return MT_OK;

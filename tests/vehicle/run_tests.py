@@ -183,8 +183,9 @@ def t_jumps(S):
 def t_land(S):
     r = S.fly(os.path.join(MISSIONS, "land.waypoints"))
     flight_ok(r)
-    check(started(r) == [("1", "TAKEOFF"), ("3", "WAYPOINT"), ("2", "DO_CHANGE_SPEED"), ("5", "WAYPOINT"),
-                         ("4", "DO_SET_SERVO"), ("7", "LAND")], "command sequence %s" % started(r))
+    # AP_Mission order: the do command after a nav command starts just before the next one
+    check(started(r) == [("1", "TAKEOFF"), ("2", "DO_CHANGE_SPEED"), ("3", "WAYPOINT"), ("4", "DO_SET_SERVO"),
+                         ("5", "WAYPOINT"), ("7", "LAND")], "command sequence %s" % started(r))
     m = re.search(r"vehicle: landed at ([0-9.]+) m from home", r.out)
     check(m is not None and 83.0 < float(m.group(1)) < 89.0, "landed at the LAND location (86 m from home)")
     check(r.value(r"servo writes (\d+)") == 1, "one servo write")
@@ -202,8 +203,9 @@ def t_rtl(S):
 def t_loiter(S):
     r = S.fly(os.path.join(MISSIONS, "loiter.waypoints"))
     flight_ok(r)
-    check(started(r) == [("1", "TAKEOFF"), ("2", "LOITER_TURNS"), ("5", "LOITER_TIME"), ("3", "CONDITION_DELAY"),
-                         ("4", "DO_SET_SERVO"), ("8", "WAYPOINT"), ("6", "CONDITION_YAW"),
+    # the delay starts with LOITER_TIME and holds back the servo, not the loiter
+    check(started(r) == [("1", "TAKEOFF"), ("2", "LOITER_TURNS"), ("3", "CONDITION_DELAY"), ("5", "LOITER_TIME"),
+                         ("4", "DO_SET_SERVO"), ("6", "CONDITION_YAW"), ("8", "WAYPOINT"),
                          ("7", "CONDITION_DISTANCE"), ("9", "RTL")], "command sequence %s" % started(r))
     for c in ("#3 CONDITION_DELAY done", "#6 CONDITION_YAW done", "#7 CONDITION_DISTANCE done"):
         check(r.events("mission: " + c) != [], c)

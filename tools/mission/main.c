@@ -4,7 +4,9 @@
  * @brief mt-mission: check a mission file (QGC WPL 110 or QGroundControl .plan) and print
  *        its execution plan; convert between the two formats.
  *
- *   mt-mission check [--json] [--max-plan N] FILE
+ *   mt-mission check [--json] [--max-plan N] [--kernel-max N] FILE
+ *                                (--kernel-max: the MT_CFG_MISSION_MAX_CMDS of the target
+ *                                 kernel, default MT_TOOL_KERNEL_MAX; says whether it fits)
  *   mt-mission fmt FILE          (rewrite as canonical QGC WPL 110 to stdout: the round trip)
  *   mt-mission convert IN OUT    (the format of each by its extension: .plan, or
  *                                 .waypoints / .txt / .mission for QGC WPL 110)
@@ -12,6 +14,10 @@
  * A file named *.plan is read as a .plan, *.waypoints / *.txt / *.mission as WPL; any other
  * name by its content (a .plan starts with '{').
  * Exit status: 0 valid (converted), 1 invalid, 2 usage or I/O error.
+ *
+ * The tool is built with its own copy of the mission library and the kernel's sequencer, with
+ * MT_CFG_MISSION_MAX_CMDS at the kernel's largest setting (mission/mission.mk), so it checks a
+ * mission of any size ArduPilot takes, whatever the vehicle's kernel was built with.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -23,12 +29,17 @@
 #include "report.h"
 #include "wpl.h"
 
+/* The kernel setting a mission is checked against by default: config.h's default. */
+#if !defined(MT_TOOL_KERNEL_MAX)
+#define MT_TOOL_KERNEL_MAX 700u
+#endif
+
 /* Mission files larger than this are not read (a 700-item .plan is well under 1 MiB). */
 #define MAX_FILE_BYTES (16u * 1024u * 1024u)
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: mt-mission check [--json] [--max-plan N] FILE\n"
+    fprintf(stderr, "usage: mt-mission check [--json] [--max-plan N] [--kernel-max N] FILE\n"
                     "       mt-mission fmt FILE\n"
                     "       mt-mission convert IN OUT\n"
                     "FILE, IN, OUT: QGC WPL 110 (.waypoints, .txt, .mission) or QGroundControl .plan;\n"
@@ -219,7 +230,7 @@ static int cmd_fmt_convert(const char *in, const char *out_path)
     return rc;
 }
 
-static int cmd_check(const char *file, int json, size_t max_plan)
+static int cmd_check(const char *file, int json, size_t max_plan, size_t kernel_max)
 {
     size_t len = 0u;
     char *text = slurp(file, &len);
@@ -231,6 +242,7 @@ static int cmd_check(const char *file, int json, size_t max_plan)
 
     if (text != NULL && plan != NULL && rep != NULL) {
         (void)mt_report_check_as(mt_mfile_format_of_path(file), text, len, plan, max_plan, rep);
+        rep->kernel_max = rep->valid ? kernel_max : 0u;
         need = (json ? mt_report_json(rep, NULL, 0u) : mt_report_text(rep, file, NULL, 0u)) + 1u;
         out = malloc(need);
         if (out != NULL) {
@@ -254,6 +266,7 @@ int main(int argc, char **argv)
 {
     int json = 0;
     size_t max_plan = 256u;
+    size_t kernel_max = MT_TOOL_KERNEL_MAX;
     const char *file = NULL;
     int i;
 
@@ -279,6 +292,13 @@ int main(int argc, char **argv)
                 return usage();
             }
             max_plan = (size_t)v;
+        } else if (strcmp(argv[i], "--kernel-max") == 0 && i + 1 < argc) {
+            char *end = NULL;
+            unsigned long v = strtoul(argv[++i], &end, 10);
+            if (end == argv[i] || *end != '\0' || v < 2u || v > 32766u) {
+                return usage();
+            }
+            kernel_max = (size_t)v;
         } else if (file == NULL && argv[i][0] != '-') {
             file = argv[i];
         } else {
@@ -288,5 +308,5 @@ int main(int argc, char **argv)
     if (file == NULL) {
         return usage();
     }
-    return cmd_check(file, json, max_plan);
+    return cmd_check(file, json, max_plan, kernel_max);
 }

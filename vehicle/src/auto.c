@@ -73,8 +73,8 @@ static void cmd_location(const veh_t *v, const mt_mission_cmd_t *c, float out[3]
         out[0] = est->pos[0];
         out[1] = est->pos[1];
     }
-    if ((c->frame == 0u) || (c->frame == 5u)) {
-        alt -= (float)v->home.alt_cm * 0.01f; /* AMSL to above home */
+    if ((c->frame == 0u) || (c->frame == 2u) || (c->frame == 5u)) {
+        alt -= (float)v->home.alt_cm * 0.01f; /* AMSL (frame 2 too, as ArduPilot reads it) */
     }
     out[2] = -alt;
 }

@@ -41,6 +41,13 @@
 #define MT_CFG_MISSION_MAX_CMDS 700u
 #endif
 
+/** Commands the mission's nav advance may visit beyond the command count before it gives
+ *  up and completes the mission: room for nav starts refused inside a loop (ArduPilot's
+ *  advance gives up after 255 commands in all). */
+#if !defined(MT_CFG_MISSION_ADVANCE_EXTRA)
+#define MT_CFG_MISSION_ADVANCE_EXTRA 255u
+#endif
+
 /** Items one work queue holds (mt/wq.h): the FIFO, the timers and the
  *  statistics are one slot record per item (112 bytes on Cortex-M4). */
 #if !defined(MT_CFG_WQ_MAX_ITEMS)
@@ -91,6 +98,9 @@
 
 #if (MT_CFG_MISSION_MAX_CMDS < 2u) || (MT_CFG_MISSION_MAX_CMDS > 32766u)
 #error "MT_CFG_MISSION_MAX_CMDS must be in [2, 32766]"
+#endif
+#if (MT_CFG_MISSION_ADVANCE_EXTRA < 1u) || (MT_CFG_MISSION_ADVANCE_EXTRA > 65535u)
+#error "MT_CFG_MISSION_ADVANCE_EXTRA must be in [1, 65535]"
 #endif
 
 #if (MT_CFG_WQ_MAX_ITEMS < 1u) || (MT_CFG_WQ_MAX_ITEMS > 64u)

@@ -11,22 +11,66 @@
  *   the nav cursor waits for verify), do/condition (run one at a time by the
  *   do cursor), jumps (DO_JUMP 177, DO_JUMP_TAG 601: resolved here, never
  *   given to a callback) and tags (JUMP_TAG 600: a marker, resolved here).
- * - The sequence executed is one walk over the list that follows jumps; a jump
- *   with repeat r >= 0 is taken r times, then falls through and its counter is
- *   reset to 0 (AP's default since PR #29763); r == -1 is taken forever.
+ * Sequencing (ArduPilot's AP_Mission: update, advance_current_nav_cmd,
+ * advance_current_do_cmd, get_next_cmd, get_next_do_cmd, set_current_cmd,
+ * resume, restart_current_nav_cmd; AP's names in brackets)
+ * - Jump resolution [get_next_cmd]: from an index, jumps are followed until a
+ *   command that is not a jump. A jump with repeat r >= 0 is taken while its
+ *   counter is below r; otherwise the walk falls through. The nav advance
+ *   counts: each jump taken increments its counter, and a jump that falls
+ *   through resets its counter to 0 (AP's default since PR #29763). The do
+ *   search and the look-ahead do not count. r == -1 is taken forever.
  *   Counters live in RAM, one per command index (the table is sized from the
  *   mission, so it can never be full: A-6).
- * - Do ordering (AP): the do commands between nav N(k) and nav N(k+1) start
- *   when N(k) has completed, one after the other (each after the previous one
- *   verified), while N(k+1) is the active nav command; those not finished when
- *   N(k+1) completes are dropped. Do commands before the first nav command run
- *   while the first one is active; do commands after the last nav command are
- *   not started (the mission completes when the last nav command does).
- * - A nav command whose start callback returns false counts as completed at
- *   once (skipped); a do command whose start returns false counts as done.
- * - mt_mission_update performs at most one nav start and one do start per
- *   call, and every walk over the list is bounded by the command count (a
- *   validated mission has no loop without a nav command, so no walk can spin).
+ * - Nav advance [advance_current_nav_cmd], when the active nav command has
+ *   verified (or none is active): the active do command is dropped; the walk
+ *   starts one past the last nav command set (nav_idx), or at a given index.
+ *   Each command it reaches: a nav command becomes nav_idx and is started; if
+ *   its start callback returns true it is the active nav command and the walk
+ *   stops, if false it is skipped and the walk goes on in the same call. A do
+ *   command (or a JUMP_TAG) is started only if no do command is active yet:
+ *   so the first do command between two nav commands starts before the next
+ *   nav command, in the same call; the others are passed. Reaching the end of
+ *   the list completes the mission, also after a do command was started there
+ *   (a trailing DO_PARACHUTE starts, then the mission completes). With no do
+ *   command started, do_done is set.
+ * - Do search [advance_current_do_cmd, get_next_do_cmd], once per update when
+ *   no do command is active and do_done is clear: the next command after
+ *   do_idx (jumps followed with the counters the advance left) starts if it
+ *   is a do command; a nav command or the end sets do_done. So the do commands
+ *   between two nav commands start one at a time, each at the update after the
+ *   previous one verified, while the later nav command runs (a condition holds
+ *   back the do commands behind it, never the nav command; those not started
+ *   when that nav command verifies, or cut off by a refused nav start, are
+ *   dropped; behind a finite jump the search sees the counter, AP #30376).
+ * - mt_mission_update [update]: verify the active nav command, and when it
+ *   verifies, advance (the end completes the mission and ends the call);
+ *   with no active nav command, advance. Then the do part: verify the active
+ *   do command (a verified one is no longer active), or run the do search.
+ *   A do command started by the advance is verified in the same call.
+ * - Callbacks: nav and do commands go to the start/verify callbacks; a do
+ *   command's start result is ignored (it stays active until it verifies).
+ *   Jumps (DO_JUMP 177, DO_JUMP_TAG 601) are resolved here and never passed
+ *   to a callback. JUMP_TAG 600 takes the do slot like a do command but is
+ *   handled here (AP's library starts it itself and verifies it true at once):
+ *   no callback, verified at the first verify. AP's library also starts and
+ *   verifies some do commands itself (servo, relay, camera, parachute...);
+ *   here the vehicle's callbacks do that part.
+ * - Start [start]: counters and cursors reset, RUNNING, advance from index 1.
+ *   Resume [resume]: from COMPLETE, or with no nav command ever set, start;
+ *   from STOPPED: RUNNING, then set_current at the active do command if any,
+ *   else at the active nav command (both start again; jumps between them are
+ *   counted again, as AP does). Set-current [set_current_cmd] at i: i == 0
+ *   (and any i on a COMPLETE mission) resets the counters; RUNNING: drop both
+ *   commands and advance from i; otherwise walk from i, counting, to the
+ *   first nav command and make it (and the first do command passed) active
+ *   without starting them, and STOP; resume starts them.
+ * - Every walk is bounded: a resolution by the command count, the nav advance
+ *   by the command count plus 255 (AP: 255 in all, so a stretch of 255 do
+ *   commands stalls it, A-1), the stopped walk by the command count. A
+ *   validated mission reaches a nav command within the command count; only
+ *   nav starts refused in a loop can exhaust the advance, which then
+ *   completes the mission.
  * - Validation, then apply (seL4 style): mt_mission_load checks the whole
  *   candidate list first; on any problem it returns the status and the
  *   offending index and leaves the active mission untouched. Loading is
@@ -39,7 +83,8 @@
  *   layer's job (mission/wpl.h).
  *
  * Reference defects fixed: A-1 the nav advance either loads a nav command or
- * completes the mission (no 255-iteration wrap); A-2 do-only loops are
+ * completes the mission (AP's 255-iteration guard leaves it running with
+ * nothing loaded); A-2 do-only loops are
  * rejected at load (MT_E_MISSION_LOOP) and every walk is bounded; A-3 the
  * look-ahead follows jumps exactly as execution does; A-5 bad jump targets are
  * rejected at load; A-6 no jump table to fill, look-ahead functions are pure;
@@ -127,19 +172,21 @@ typedef void (*mt_mission_done_fn_t)(void *ctx);
 typedef struct {
     /* active mission (written only by apply) */
     mt_mission_cmd_t cmd[MT_CFG_MISSION_MAX_CMDS];
-    uint8_t kind[MT_CFG_MISSION_MAX_CMDS];     /**< MT_MISSION_KIND_* of cmd[i] */
-    uint16_t target[MT_CFG_MISSION_MAX_CMDS];  /**< jumps: resolved target index */
-    int16_t repeat[MT_CFG_MISSION_MAX_CMDS];   /**< jumps: repeat count, -1 forever */
-    int16_t count[MT_CFG_MISSION_MAX_CMDS];    /**< jumps: times taken since the last reset */
-    uint16_t total;                            /**< commands, home included (0: none) */
-    uint32_t generation;                       /**< incremented by every successful load */
-    /* cursors */
-    uint8_t state;     /**< MT_MISSION_STOPPED / RUNNING / COMPLETE */
-    uint8_t do_done;   /**< 1: the do walk has reached the active nav command */
-    uint16_t nav;      /**< active nav command or MT_MISSION_NONE */
-    uint16_t do_cmd;   /**< active do command or MT_MISSION_NONE */
-    uint16_t wpos;     /**< next index the execution walk visits (total: end) */
-    uint16_t prev_nav; /**< last nav command that completed, or MT_MISSION_NONE */
+    uint8_t kind[MT_CFG_MISSION_MAX_CMDS];    /**< MT_MISSION_KIND_* of cmd[i] */
+    uint16_t target[MT_CFG_MISSION_MAX_CMDS]; /**< jumps: resolved target index */
+    int16_t repeat[MT_CFG_MISSION_MAX_CMDS];  /**< jumps: repeat count, -1 forever */
+    int16_t count[MT_CFG_MISSION_MAX_CMDS];   /**< jumps: times taken since the last reset */
+    uint16_t total;                           /**< commands, home included (0: none) */
+    uint32_t generation;                      /**< incremented by every successful load */
+    /* cursors (AP_Mission's names in brackets) */
+    uint8_t state;   /**< MT_MISSION_STOPPED / RUNNING / COMPLETE */
+    uint8_t do_done; /**< 1: no do command left before the active nav command [do_cmd_all_done] */
+    uint16_t nav;    /**< active nav command or MT_MISSION_NONE [_nav_cmd, when loaded] */
+    uint16_t
+        do_cmd; /**< active do command (or JUMP_TAG) or MT_MISSION_NONE [_do_cmd, when loaded] */
+    uint16_t nav_idx;     /**< last nav command set, started or refused, or NONE [_nav_cmd.index] */
+    uint16_t do_idx;      /**< last do command set, or NONE [_do_cmd.index] */
+    uint16_t prev_nav;    /**< nav_idx before the advance last set it, or NONE [_prev_nav_cmd_index] */
     uint32_t completions; /**< times the complete callback was called */
     /* vehicle callbacks */
     mt_mission_cmd_fn_t start_fn;
@@ -177,17 +224,21 @@ extern uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
             (m->repeat[i] >= 0 ==> 0 <= m->count[i] <= m->repeat[i]) &&
             (m->repeat[i] < 0 ==> m->count[i] == 0);
 
+    predicate MtMissionDoCursor(mt_mission_t *m, integer i) =
+        i == MT_MISSION_NONE ||
+        (MtMissionIdx(m, i) && (m->kind[i] == MT_MISSION_KIND_DO || m->kind[i] == MT_MISSION_KIND_TAG));
+
     predicate MtMissionCursors(mt_mission_t *m) =
         (m->state == MT_MISSION_STOPPED || m->state == MT_MISSION_RUNNING ||
          m->state == MT_MISSION_COMPLETE) &&
-        MtMissionCursor(m, m->nav, MT_MISSION_KIND_NAV) &&
+        MtMissionCursor(m, m->nav_idx, MT_MISSION_KIND_NAV) &&
         MtMissionCursor(m, m->prev_nav, MT_MISSION_KIND_NAV) &&
-        MtMissionCursor(m, m->do_cmd, MT_MISSION_KIND_DO) &&
+        MtMissionDoCursor(m, m->do_idx) &&
+        (m->nav == MT_MISSION_NONE || m->nav == m->nav_idx) &&
+        (m->do_cmd == MT_MISSION_NONE || m->do_cmd == m->do_idx) &&
         (m->do_cmd != MT_MISSION_NONE ==> m->nav != MT_MISSION_NONE) &&
         (m->do_done == 0 || m->do_done == 1) &&
-        (m->state != MT_MISSION_STOPPED ==> m->total >= 2) &&
-        (m->total == 0 ==> m->wpos == 0) &&
-        (m->total >= 1 ==> 1 <= m->wpos <= m->total);
+        (m->state != MT_MISSION_STOPPED ==> m->total >= 2);
 
     predicate MtMissionInv(mt_mission_t *m) =
         \valid(m) && 0 <= m->total <= MT_CFG_MISSION_MAX_CMDS &&
@@ -221,7 +272,8 @@ extern uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
         \at(m->generation, L1) == \at(m->generation, L2) &&
         \at(m->state, L1) == \at(m->state, L2) &&
         \at(m->nav, L1) == \at(m->nav, L2) && \at(m->do_cmd, L1) == \at(m->do_cmd, L2) &&
-        \at(m->wpos, L1) == \at(m->wpos, L2) && \at(m->do_done, L1) == \at(m->do_done, L2) &&
+        \at(m->nav_idx, L1) == \at(m->nav_idx, L2) && \at(m->do_idx, L1) == \at(m->do_idx, L2) &&
+        \at(m->do_done, L1) == \at(m->do_done, L2) &&
         \at(m->prev_nav, L1) == \at(m->prev_nav, L2) &&
         \at(m->completions, L1) == \at(m->completions, L2) &&
         \forall integer i; 0 <= i < MT_CFG_MISSION_MAX_CMDS ==>
@@ -328,7 +380,7 @@ mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds
     behavior not_running:
       assumes m->state != MT_MISSION_RUNNING;
       ensures loaded: \result == MT_OK ==> m->total == n && m->state == MT_MISSION_STOPPED &&
-          m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->wpos == 1 &&
+          m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->nav_idx == MT_MISSION_NONE &&
           (m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF);
       ensures rejected: \result != MT_OK ==> MtMissionActiveUnchanged{Pre, Post}(m);
     complete behaviors;
@@ -336,10 +388,10 @@ mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds
 */
 mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad);
 
-/** Start from the first command: counters reset, RUNNING, and one start
- *  attempt on the first nav command (if its start callback refuses, it counts
- *  as completed and the next update loads the following one; with no nav
- *  command at all the mission completes at once).
+/** Start from the first command: counters and cursors reset, RUNNING, and
+ *  the nav advance from index 1 (the first do command before the first nav
+ *  command starts, then the first nav command whose start succeeds; with no
+ *  such nav command the mission completes at once).
  *  @retval MT_OK
  *  @retval MT_E_EMPTY no command besides home (nothing changes) */
 /*@ requires inv: MtMissionInv(m);
@@ -378,9 +430,10 @@ mt_status_t mt_mission_start(mt_mission_t *m);
 */
 mt_status_t mt_mission_stop(mt_mission_t *m);
 
-/** STOPPED -> RUNNING: the active nav and do commands are started again (a new
- *  load of each); without an active nav command the next update advances from
- *  the current position. COMPLETE -> mt_mission_start.
+/** STOPPED -> RUNNING: set-current at the active do command if there is one,
+ *  else at the active nav command (both are started again); with neither, the
+ *  next update advances. COMPLETE, or no nav command ever set ->
+ *  mt_mission_start.
  *  @retval MT_OK
  *  @retval MT_E_STATE already running (nothing changes)
  *  @retval MT_E_EMPTY no command besides home (nothing changes) */
@@ -407,11 +460,14 @@ mt_status_t mt_mission_resume(mt_mission_t *m);
 
 /** Make index i the next command to execute (AP set_current_cmd). i == 0
  *  means 1 with jump counters reset; a COMPLETE mission also resets them.
- *  RUNNING: the active commands are dropped and the nav command at or after
- *  i is started now. Otherwise: the position is set and the state becomes
- *  STOPPED; mt_mission_resume continues from there.
+ *  RUNNING: the active commands are dropped and the nav advance runs from i
+ *  (the end of the list completes the mission). Otherwise: the walk from i
+ *  (counting jumps) makes the first nav command and the first do command it
+ *  passes active without starting them, and the state becomes STOPPED;
+ *  mt_mission_resume starts them.
  *  @retval MT_OK
- *  @retval MT_E_EMPTY no command besides home (nothing changes)
+ *  @retval MT_E_EMPTY no command besides home, or (not running) no nav
+ *          command at or after i (nothing changes)
  *  @retval MT_E_INVALID i >= count (nothing changes) */
 /*@ requires inv: MtMissionInv(m);
     assigns *m, MtPortNow;
@@ -431,28 +487,30 @@ mt_status_t mt_mission_resume(mt_mission_t *m);
       ensures same_mission: m->total == \old(m->total) && m->generation == \old(m->generation);
     behavior not_running:
       assumes m->total >= 2 && i < m->total && m->state != MT_MISSION_RUNNING;
-      ensures status: \result == MT_OK;
-      ensures state: m->state == MT_MISSION_STOPPED;
-      ensures position: m->wpos == (i == 0 ? 1 : i) && m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+      ensures status: \result == MT_OK || \result == MT_E_EMPTY;
+      ensures state: \result == MT_OK ==> m->state == MT_MISSION_STOPPED;
+      ensures none: \result == MT_E_EMPTY ==> MtMissionActiveUnchanged{Pre, Post}(m);
       ensures same_mission: m->total == \old(m->total) && m->generation == \old(m->generation);
     complete behaviors;
     disjoint behaviors;
 */
 mt_status_t mt_mission_set_current(mt_mission_t *m, uint16_t i);
 
-/** Start the active nav command again (after a mission change or a mode
- *  switch); the do cursor is kept. A refused start completes the command.
+/** Start the last nav command set again (after a mission change or a mode
+ *  switch): set-current at nav_idx (AP restart_current_nav_cmd); the active
+ *  do command is dropped. A refused start walks on as the nav advance does.
  *  @retval MT_OK
- *  @retval MT_E_STATE not running, or no active nav command (nothing changes) */
+ *  @retval MT_E_STATE not running, or no nav command set (nothing changes) */
 /*@ requires inv: MtMissionInv(m);
     assigns *m, MtPortNow;
     ensures inv: MtMissionInv(m);
     behavior active:
-      assumes m->state == MT_MISSION_RUNNING && m->nav != MT_MISSION_NONE;
+      assumes m->state == MT_MISSION_RUNNING && m->nav_idx != MT_MISSION_NONE;
       ensures status: \result == MT_OK;
+      ensures state: m->state == MT_MISSION_RUNNING || m->state == MT_MISSION_COMPLETE;
       ensures same_mission: m->total == \old(m->total) && m->generation == \old(m->generation);
     behavior other:
-      assumes !(m->state == MT_MISSION_RUNNING && m->nav != MT_MISSION_NONE);
+      assumes !(m->state == MT_MISSION_RUNNING && m->nav_idx != MT_MISSION_NONE);
       ensures status: \result == MT_E_STATE;
       ensures untouched: MtMissionActiveUnchanged{Pre, Post}(m);
     complete behaviors;
@@ -460,9 +518,10 @@ mt_status_t mt_mission_set_current(mt_mission_t *m, uint16_t i);
 */
 mt_status_t mt_mission_restart_current(mt_mission_t *m);
 
-/** One sequencing step: verify the active nav command (advance when it
- *  completed, or load one when none is active), then verify the active do
- *  command or start the next one. At most one nav start and one do start.
+/** One sequencing step (AP update): verify the active nav command and
+ *  advance when it verified (or advance when none is active); the end of the
+ *  list completes the mission. Then verify the active do command, or run the
+ *  do search. See the rules at the top.
  *  @retval MT_OK
  *  @retval MT_E_STATE not running (nothing changes) */
 /*@ requires inv: MtMissionInv(m);

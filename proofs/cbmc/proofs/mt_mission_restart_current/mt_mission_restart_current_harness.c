@@ -18,7 +18,11 @@ void harness(void)
 
     MTC_REACH(res == MT_E_STATE && m->state == MT_MISSION_RUNNING);
     MTC_REACH(res == MT_E_STATE && m->nav != MT_MISSION_NONE);
+    /* refused, the loop brought the walk back to it past a do command */
     MTC_REACH(res == MT_OK && m->nav == MTC_OLDV(m->nav) && m->do_cmd != MT_MISSION_NONE);
+    /* the plain restart: the same nav command, no do command left before it */
+    MTC_REACH(res == MT_OK && m->nav == MTC_OLDV(m->nav_idx) && m->do_cmd == MT_MISSION_NONE &&
+              m->do_done == 1u);
     /* refused: the command completes and the next one is loaded */
     MTC_REACH(res == MT_OK && m->prev_nav == MTC_OLDV(m->nav) && m->nav != MT_MISSION_NONE);
     /* refused, and it was the last one: mission complete */

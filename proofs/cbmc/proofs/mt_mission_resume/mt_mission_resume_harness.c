@@ -24,13 +24,17 @@ void harness(void)
     /* the active nav and do commands started again */
     MTC_REACH(res == MT_OK && MTC_OLDV(m->state) == MT_MISSION_STOPPED &&
               m->nav == MTC_OLDV(m->nav) && m->do_cmd != MT_MISSION_NONE);
-    /* the do command refused its restart */
+    /* set-current at the do command: the nav command after it refused, the walk went on */
     MTC_REACH(res == MT_OK && MTC_OLDV(m->do_cmd) != MT_MISSION_NONE &&
-              m->nav == MTC_OLDV(m->nav) && m->do_cmd == MT_MISSION_NONE);
+              m->nav != MTC_OLDV(m->nav) && m->nav != MT_MISSION_NONE);
     /* the nav command refused its restart and the mission completed */
     MTC_REACH(res == MT_OK && MTC_OLDV(m->nav) != MT_MISSION_NONE &&
               m->state == MT_MISSION_COMPLETE);
-    /* no active nav command: advance from the position */
+    /* no nav command ever set: start */
     MTC_REACH(res == MT_OK && MTC_OLDV(m->nav) == MT_MISSION_NONE &&
               MTC_OLDV(m->state) == MT_MISSION_STOPPED && m->nav != MT_MISSION_NONE);
+    /* a nav command set but none active: RUNNING, the next update advances */
+    MTC_REACH(res == MT_OK && MTC_OLDV(m->nav) == MT_MISSION_NONE &&
+              MTC_OLDV(m->nav_idx) != MT_MISSION_NONE && m->state == MT_MISSION_RUNNING &&
+              m->nav == MT_MISSION_NONE);
 }

@@ -17,7 +17,12 @@ void harness(void)
     mt_status_t res = mt_mission_set_current(m, i);
     mtc_post_mt_mission_set_current(m, i, res);
 
-    MTC_REACH(res == MT_E_EMPTY);
+    MTC_REACH(res == MT_E_EMPTY && m->total < 2u);
+    /* stopped, no nav command at or after i: nothing changes */
+    MTC_REACH(res == MT_E_EMPTY && m->total >= 2u && i > 0u);
+    /* stopped: the walk made the first do command and the nav command after it active */
+    MTC_REACH(res == MT_OK && MTC_OLDV(m->state) != MT_MISSION_RUNNING &&
+              m->do_cmd != MT_MISSION_NONE && m->do_cmd < m->nav);
     MTC_REACH(res == MT_E_INVALID && i == 0xFFFFu);
     /* running: the nav command at or after i started now */
     MTC_REACH(res == MT_OK && MTC_OLDV(m->state) == MT_MISSION_RUNNING && i > 1u &&

@@ -22,9 +22,16 @@ void harness(void)
     /* no nav command at all: complete at once (also with a saturated counter) */
     MTC_REACH(res == MT_OK && m->state == MT_MISSION_COMPLETE);
     MTC_REACH(res == MT_OK && MTC_OLDV(m->completions) == 0xFFFFFFFFu);
-    /* the first nav command refused: it counts as completed, the next update loads the next */
+    /* the first nav command refused: the walk goes on and starts the next one */
     MTC_REACH(res == MT_OK && m->state == MT_MISSION_RUNNING && m->prev_nav != MT_MISSION_NONE &&
-              m->nav == MT_MISSION_NONE && m->wpos == m->prev_nav + 1u);
+              m->nav != MT_MISSION_NONE);
+    /* the first do command started before the first nav command */
+    MTC_REACH(res == MT_OK && m->do_cmd != MT_MISSION_NONE && m->do_cmd < m->nav);
+    /* every nav start refused in a repeat-forever loop: the bound completes the mission */
+    MTC_REACH(res == MT_OK && m->state == MT_MISSION_COMPLETE &&
+              m->kind[2] == MT_MISSION_KIND_JUMP && m->repeat[2] == -1 && m->nav_idx == 1u);
+    /* a trailing do command started, then the end */
+    MTC_REACH(res == MT_OK && m->state == MT_MISSION_COMPLETE && m->do_idx != MT_MISSION_NONE);
     /* a jump taken on the way to the first nav command */
     MTC_REACH(res == MT_OK && m->kind[1] == MT_MISSION_KIND_JUMP && m->count[1] == 1);
 }

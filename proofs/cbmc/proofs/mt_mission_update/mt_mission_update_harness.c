@@ -32,9 +32,23 @@ void harness(void)
     MTC_REACH(res == MT_OK && m->state == MT_MISSION_COMPLETE &&
               MTC_OLDV(m->completions) == 0xFFFFFFFFu);
     /* a do command started, and one verified */
-    MTC_REACH(res == MT_OK && MTC_OLDV(m->do_cmd) == MT_MISSION_NONE && m->do_cmd != MT_MISSION_NONE);
-    MTC_REACH(res == MT_OK && MTC_OLDV(m->do_cmd) != MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE &&
-              m->nav == MTC_OLDV(m->nav));
-    /* the do walk reached the nav command */
+    MTC_REACH(res == MT_OK && MTC_OLDV(m->do_cmd) == MT_MISSION_NONE &&
+              m->do_cmd != MT_MISSION_NONE);
+    MTC_REACH(res == MT_OK && MTC_OLDV(m->do_cmd) != MT_MISSION_NONE &&
+              m->do_cmd == MT_MISSION_NONE && m->nav == MTC_OLDV(m->nav));
+    /* the do search reached the nav command */
     MTC_REACH(res == MT_OK && MTC_OLDV(m->do_done) == 0u && m->do_done == 1u);
+    /* the do search started the next do command while the same nav command runs */
+    MTC_REACH(res == MT_OK && MTC_OLDV(m->do_cmd) == MT_MISSION_NONE &&
+              m->nav == MTC_OLDV(m->nav) && m->do_cmd != MT_MISSION_NONE &&
+              m->do_cmd > MTC_OLDV(m->do_idx));
+    /* the advance started a do command and the nav command after it */
+    MTC_REACH(res == MT_OK && m->nav != MTC_OLDV(m->nav) && m->do_cmd != MT_MISSION_NONE &&
+              m->do_cmd < m->nav);
+    /* a trailing do command started, then the end */
+    MTC_REACH(res == MT_OK && m->state == MT_MISSION_COMPLETE && m->do_idx != MT_MISSION_NONE &&
+              m->do_idx > MTC_OLDV(m->nav));
+    /* a JUMP_TAG in the do slot verifies without a callback */
+    MTC_REACH(res == MT_OK && MTC_OLDV(m->do_cmd) != MT_MISSION_NONE &&
+              m->kind[MTC_OLDV(m->do_cmd)] == MT_MISSION_KIND_TAG && m->do_cmd == MT_MISSION_NONE);
 }
