@@ -6,8 +6,9 @@
  * Loads one fixed mission into the real kernel/src/mission.c and runs a
  * seeded random sequence of mt_mission_start / stop / resume / set_current /
  * restart_current / update; the start and verify callbacks return seeded
- * random outcomes. Every call is logged with the callbacks it made (in
- * order, with their index and outcome) and the cursor state it left.
+ * random outcomes (a do command's start result is ignored by mission.c).
+ * Every call is logged with the callbacks it made (in order, with their
+ * index and outcome) and the cursor state it left.
  *
  * The log is a TLA+ module (MissionSeqTraceData.tla):
  *   TN, TKind, TTgt, TRep   the mission as loaded (kind, resolved jump
@@ -15,20 +16,24 @@
  *   Trace                   one record per event:
  *     op    "start", "stop", "resume", "set_current", "restart_current",
  *           "update" (a refused update, rc E_STATE), or the two halves of an
- *           accepted update: "update_nav" (the callbacks on nav commands and
- *           the complete callback) then "update_do" (those on do commands)
+ *           accepted update: "update_nav" (the verify of the nav command and
+ *           the advance: nav and do starts, the complete callback) then
+ *           "update_do" (the verify of the do command or the do search's
+ *           start: at most one callback, the call's last, on a do command;
+ *           the nav half never ends with one)
  *     arg   set_current's index (0 otherwise)
- *     rc    the status ("OK", "E_STATE", "E_INVALID")
+ *     rc    the status ("OK", "E_STATE", "E_INVALID", "E_EMPTY")
  *     cbs   <<[k |-> "start" | "verify" | "done", i |-> index, r |-> outcome]>>
  *     snap  TRUE when the state fields below are the state after the event
  *           (FALSE for "update_nav": the call has not returned yet)
- *     st, nav, dcmd, ddone, wpos, prev, cnt
- *           state, nav, do_cmd, do_done, wpos, prev_nav (MT_MISSION_NONE
- *           logged as 0) and the jump counters of indices 1..TN-1
+ *     st, nav, navidx, dcmd, doidx, ddone, prev, cnt
+ *           state, nav, nav_idx, do_cmd, do_idx, do_done, prev_nav
+ *           (MT_MISSION_NONE logged as 0) and the jump counters of indices
+ *           1..TN-1
  * tla/MissionSeqTrace.tla checks that the model takes exactly these steps.
  *
  * usage: mission_trace MISSION OPS SEED OUT_DIR
- *        MISSION: nested | forever | tags_do
+ *        MISSION: nested | forever | tags_do | do_runs
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -39,7 +44,7 @@
 #include "trace_rng.h"
 
 #define MAX_CMDS 24u
-#define MAX_CBS 8u
+#define MAX_CBS 600u /* an advance visits at most total + MT_CFG_MISSION_ADVANCE_EXTRA commands */
 
 typedef struct {
     const char *k;
@@ -132,10 +137,10 @@ static void emit(const char *op, uint32_t arg, mt_status_t rc, uint32_t from, ui
                 g_cbs[j].i, g_cbs[j].r ? "TRUE" : "FALSE");
     }
     fprintf(g_out,
-            ">>, snap |-> %s, st |-> \"%s\", nav |-> %u, dcmd |-> %u, ddone |-> %s, wpos |-> %u, "
-            "prev |-> %u, cnt |-> <<",
-            snap ? "TRUE" : "FALSE", state_name(g_m.state), idx(g_m.nav), idx(g_m.do_cmd),
-            g_m.do_done ? "TRUE" : "FALSE", g_m.wpos, idx(g_m.prev_nav));
+            ">>, snap |-> %s, st |-> \"%s\", nav |-> %u, navidx |-> %u, dcmd |-> %u, doidx |-> %u, "
+            "ddone |-> %s, prev |-> %u, cnt |-> <<",
+            snap ? "TRUE" : "FALSE", state_name(g_m.state), idx(g_m.nav), idx(g_m.nav_idx),
+            idx(g_m.do_cmd), idx(g_m.do_idx), g_m.do_done ? "TRUE" : "FALSE", idx(g_m.prev_nav));
     for (j = 1u; j < g_m.total; j++) {
         fprintf(g_out, "%s%d", j > 1u ? ", " : "", g_m.count[j]);
     }
@@ -169,6 +174,10 @@ static const item_t k_tags_do[] = {
     NAV, /* do-only stretches and jump tags: 1 do, 2 do, 3 nav, 4 tag 7, 5 do, 6 do, 7 nav,
           * 8 jump_tag 7 x2, 9 do, 10 do, 11 do, 12 nav, 13 jump->12 x1, 14 do, 15 do */
     DO,  DO, NAV, TAG(7), DO, DO, NAV, JUMP_TAG(7, 2), DO, DO, DO, NAV, JUMP(12, 1), DO, DO};
+static const item_t k_do_runs[] = {
+    NAV, /* runs of do commands: 1 do, 2 do, 3 nav, 4 do, 5 do, 6 do, 7 nav, 8 jump->5 x2,
+          * 9 tag 9, 10 do, 11 do, 12 nav, 13 jump_tag 9 x1, 14 do, 15 do, 16 do (trailing) */
+    DO,  DO, NAV, DO, DO, DO, NAV, JUMP(5, 2), TAG(9), DO, DO, NAV, JUMP_TAG(9, 1), DO, DO, DO};
 
 static mt_mission_cmd_t g_cmds[MAX_CMDS];
 static uint16_t g_n;
@@ -188,6 +197,9 @@ static int build(const char *name)
     } else if (strcmp(name, "tags_do") == 0) {
         items = k_tags_do;
         n = (uint16_t)(sizeof k_tags_do / sizeof k_tags_do[0]);
+    } else if (strcmp(name, "do_runs") == 0) {
+        items = k_do_runs;
+        n = (uint16_t)(sizeof k_do_runs / sizeof k_do_runs[0]);
     } else {
         return -1;
     }
@@ -247,10 +259,12 @@ static void step(void)
             emit("update", 0u, rc, 0u, g_ncb, 1);
             return;
         }
-        /* nav part first: callbacks on nav commands and the complete callback */
-        for (j = 0u; j < g_ncb && (strcmp(g_cbs[j].k, "done") == 0 ||
-                                   g_m.kind[g_cbs[j].i] == MT_MISSION_KIND_NAV);
-             j++) {
+        /* the do half's callback, if any, is the last one and is on a do command: the nav
+         * half ends with the nav command's verify, a nav start or the complete callback */
+        j = g_ncb;
+        if ((j > 0u) && (strcmp(g_cbs[j - 1u].k, "done") != 0) &&
+            (g_m.kind[g_cbs[j - 1u].i] == MT_MISSION_KIND_DO)) {
+            j--;
         }
         emit("update_nav", 0u, rc, 0u, j, 0);
         emit("update_do", 0u, rc, j, g_ncb, 1);
@@ -282,7 +296,7 @@ int main(int argc, char **argv)
     mt_status_t st;
 
     if (argc != 5) {
-        fprintf(stderr, "usage: %s nested|forever|tags_do OPS SEED OUT_DIR\n", argv[0]);
+        fprintf(stderr, "usage: %s nested|forever|tags_do|do_runs OPS SEED OUT_DIR\n", argv[0]);
         return 2;
     }
     if (build(argv[1]) != 0) {

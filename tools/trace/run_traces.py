@@ -17,8 +17,10 @@ rejected.
 tools/trace/mission_trace runs kernel/src/mission.c on fixed missions with
 seeded random operations and callback outcomes; tla/MissionSeqTrace.tla
 replays each log (callbacks in order with index and outcome, cursor state
-after each call). Two controls per mission must be rejected: one logged wpos
-changed ("mutated") and one callback outcome flipped ("flipped").
+after each call). Two controls per mission must be rejected at the changed
+event: one logged nav_idx changed ("mutated") and one callback outcome that
+mission.c acts on flipped ("flipped": a verify, or the start of a nav
+command; a do command's start result is ignored).
 
     tools/trace/run_traces.py [--jar JAR] [--out DIR] [--seeds N] [--only ring sem mission]
 
@@ -53,14 +55,26 @@ MISSION_CASES = [
     ("mission_nested", "nested", 200),
     ("mission_forever", "forever", 200),
     ("mission_tags_do", "tags_do", 200),
+    ("mission_do_runs", "do_runs", 200),
 ]
 MISSION_SEEDS = 2
+# MT_CFG_MISSION_ADVANCE_EXTRA of the traced mission.c, and the model's Extra: 2, as in the
+# CBMC harnesses and the TLC configurations. The default 255 is the same code with a larger
+# loop bound, which only a walk with more refused nav starts than the traces have reaches;
+# the model's walk then costs TLC about 10 times more (forever: 30 s a trace instead of 3 s).
+MISSION_ADVANCE_EXTRA = 2
 
 RE_LOAD = re.compile(r'k \|-> "load", f \|-> "(\w+)", v \|-> (\d+)\]')
 RE_RESUME = re.compile(r'k \|-> "resume", r \|-> (TRUE|FALSE)\]')
-RE_WPOS = re.compile(r'snap \|-> TRUE, .*?wpos \|-> (\d+)')
-RE_CB = re.compile(r'k \|-> "(?:start|verify)", i \|-> \d+, r \|-> (TRUE|FALSE)\]')
+RE_NAVIDX = re.compile(r'snap \|-> TRUE, .*?navidx \|-> (\d+)')
+RE_CB = re.compile(r'k \|-> "(start|verify)", i \|-> (\d+), r \|-> (TRUE|FALSE)\]')
 RE_TN = re.compile(r'^TN == (\d+)$', re.M)
+RE_TKIND = re.compile(r'^TKind == <<(.*)>>$', re.M)
+
+
+def mission_kinds(text):
+    """Kind of each index 1..TN-1 of a mission trace module (list index i - 1)."""
+    return [k.strip().strip('"') for k in RE_TKIND.search(text).group(1).split(",")]
 
 
 KINC = ["-I" + os.path.join(ROOT, "kernel", d) for d in ("include", "port", "spec", "src")]
@@ -86,7 +100,8 @@ def build(out):
                                 "-Wl," + ",".join("--wrap=" + w for w in WRAP),
                                 "-pthread", "-o", sem], check=True)
     mission = os.path.join(out, "mission_trace")
-    subprocess.run(cc + ["-Wconversion", "-Wsign-conversion", "-Wshadow", "-Wstrict-prototypes"]
+    subprocess.run(cc + ["-Wconversion", "-Wsign-conversion", "-Wshadow", "-Wstrict-prototypes",
+                         "-DMT_CFG_MISSION_ADVANCE_EXTRA=%du" % MISSION_ADVANCE_EXTRA]
                    + KINC + [os.path.join(HERE, "mission_trace.c"),
                              os.path.join(KSRC, "mission.c"),
                              os.path.join(KSRC, "mission_invoke.c"), "-o", mission], check=True)
@@ -112,33 +127,44 @@ def write_sem_cfg(path):
 
 
 def write_mission_cfg(path):
-    # the model's invariants hold on every state of the trace too (the tags_do mission
-    # has no model configuration of its own); TraceNotAccepted comes last
+    # the model's invariants hold on every state of the trace too (the trace missions have
+    # no model configuration of their own); TraceNotAccepted comes last
     with open(path, "w") as f:
         f.write("CONSTANTS\n    N <- TN\n    Kind <- TKind\n    Tgt <- TTgt\n    Rep <- TRep\n"
-                "    NONE = 0\nSPECIFICATION TraceSpec\n"
-                "INVARIANTS TypeOK CursorsValid CountersBounded NoCallbackSeesJump CompleteOncePerRun\n"
-                "    LookAheadBounded LookAheadMatches TraceNotAccepted\n")
+                "    NONE = 0\n    Extra = %d\n    VARIANT = \"ap\"\nSPECIFICATION TraceSpec\n"
+                % MISSION_ADVANCE_EXTRA +
+                "INVARIANTS TypeOK CursorsValid NavActive CountersBounded NoCallbackSeesJump\n"
+                "    CompleteOncePerRun LookAheadBounded LookAheadMatches AdvanceFollowsOrder\n"
+                "    FirstDoBeforeNav TrailingDoStarts TraceNotAccepted\n")
 
 
 def mutate_mission(data_path, variant):
-    """Mission: "mutated" changes the wpos of the middle state-carrying event
-    (to the next value in 1..TN); "flipped" flips the outcome of the middle
-    start or verify callback. Returns the index of the changed event (0: none)."""
+    """Mission: "mutated" changes the nav_idx of the middle state-carrying event
+    (to the next value in 0..TN-1, 0 standing for MT_MISSION_NONE); "flipped"
+    flips the outcome of the middle callback whose outcome mission.c acts on (a
+    verify, or the start of a nav command). Returns the index of the changed
+    event (0: none)."""
     with open(data_path) as f:
         text = f.read()
     n = int(RE_TN.search(text).group(1))
-    found = list((RE_WPOS if variant == "mutated" else RE_CB).finditer(text))
+    if variant == "mutated":
+        found = list(RE_NAVIDX.finditer(text))
+        group = 1
+    else:
+        kinds = mission_kinds(text)
+        found = [m for m in RE_CB.finditer(text)
+                 if m.group(1) == "verify" or kinds[int(m.group(2)) - 1] == "nav"]
+        group = 3
     if not found:
         return 0
     m = found[len(found) // 2]
     if variant == "mutated":
-        v = str(int(m.group(1)) % n + 1)
+        v = str((int(m.group(1)) + 1) % n)
     else:
-        v = "FALSE" if m.group(1) == "TRUE" else "TRUE"
+        v = "FALSE" if m.group(3) == "TRUE" else "TRUE"
     with open(data_path, "w") as f:
-        f.write(text[:m.start(1)] + v + text[m.end(1):])
-    return text.count("[op |-> ", 0, m.start(1))
+        f.write(text[:m.start(group)] + v + text[m.end(group):])
+    return text.count("[op |-> ", 0, m.start(group))
 
 
 def mutate(data_path, slots):
@@ -162,7 +188,9 @@ def mutate(data_path, slots):
 
 
 def tlc(args, work, spec):
-    cmd = ["java", "-XX:+UseParallelGC", "-Xmx1g", "-cp", args.jar, "tlc2.TLC",
+    # -Xss: the mission model's walk recurses once per command it visits (with
+    # MT_CFG_MISSION_ADVANCE_EXTRA 255 the default stack overflows)
+    cmd = ["java", "-XX:+UseParallelGC", "-Xmx1g", "-Xss64m", "-cp", args.jar, "tlc2.TLC",
            "-workers", "auto", "-cleanup", "-metadir", os.path.join(work, "states"),
            "-config", spec + ".cfg", spec + ".tla"]
     p = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -282,8 +310,12 @@ def main():
                             key = ("update" if op == "update_nav" else op) + ":" + rc
                             calls[key] = calls.get(key, 0) + 1
                     rec["calls"] = dict(sorted(calls.items()))
-                    rec["refused_starts"] = text.count('k |-> "start", i |-> ') - len(
-                        re.findall(r'k \|-> "start", i \|-> \d+, r \|-> TRUE', text))
+                    # nav starts refused (a do command's start result is ignored)
+                    kinds = mission_kinds(text)
+                    rec["refused_starts"] = sum(
+                        1 for m in RE_CB.finditer(text)
+                        if m.group(1) == "start" and kinds[int(m.group(2)) - 1] == "nav"
+                        and m.group(3) == "FALSE")
                 stuck = re.findall(r"^/\\ ti = (\d+)", log, re.M)
                 if result == "rejected" and stuck:
                     rec["unmatched_event"] = int(stuck[-1])   # Trace[ti]: no model step matches
