@@ -2,7 +2,9 @@
 # proofs/check.mk -- make check-<module>: everything about one kernel module, included by
 # proofs/proofs.mk (paths relative to the root). In order, each must pass:
 #   1. its googletest suites (build/gcc/mt_tests, CHECK_TEST_<m> as the gtest filter)
-#   2. Frama-C WP on the module from source, the smoke canary, and the WP gate on that module
+#   2. Frama-C WP on the module's files from source (the WP modules <m> and <m>_*: a module
+#      split over several files, such as wq.c, wq_timer.c, ...), the smoke canary, and the WP
+#      gate on those
 #   3. its CBMC harnesses (proofs/cbmc/proofs/<function>/, CHECK_CBMC_<m>: name prefixes)
 #   4. TLC on the CI configurations of its model (tla/models.json "module" = CHECK_TLA_<m>)
 #   5. its trace validation (tools/trace/run_traces.py --only CHECK_TRACE_<m>)
@@ -50,6 +52,7 @@ CHECK_TRACE_sem     := sem
 CHECK_TRACE_mission := mission
 
 check_comma := ,
+check_wp = $(filter $(1) $(1)_%,$(WP_MODULES))
 check_harnesses = $(foreach p,$(CHECK_CBMC_$(1)),$(filter $(p)%,$(CBMC_PROOF_NAMES)))
 check_models = python3 -c 'import json; print(" ".join(m["name"] for m in \
     json.load(open("tla/models.json"))["models"] if m["module"] == "$(1)" and not m["deep"]))'
@@ -63,9 +66,9 @@ $(addprefix check-,$(CHECK_MODULES)): check-%: deps-test deps-prove
 	@n=$$($(BUILD)/gcc/mt_tests --gtest_list_tests --gtest_filter='$(CHECK_TEST_$*)' | grep -c '^  '); \
 	[ "$$n" -gt 0 ] || { echo "check-$*: no test matches $(CHECK_TEST_$*)"; exit 1; }
 	@$(BUILD)/gcc/mt_tests --gtest_brief=1 --gtest_filter='$(CHECK_TEST_$*)'
-	@echo "== check-$*: WP"
-	@$(MAKE) --no-print-directory -j$(WP_JOBS) wp-$* wp-canary
-	@set -o pipefail; python3 proofs/wp/gate.py --wp-dir $(WP_DIR) --modules $* --quiet \
+	@echo "== check-$*: WP ($(call check_wp,$*))"
+	@$(MAKE) --no-print-directory -j$(WP_JOBS) $(addprefix wp-,$(call check_wp,$*)) wp-canary
+	@set -o pipefail; python3 proofs/wp/gate.py --wp-dir $(WP_DIR) --modules $(call wp_list,$(call check_wp,$*)) --quiet \
 	    --summary $(BUILD)/check/$*/wp-summary.json | tail -n 4
 	@echo "== check-$*: CBMC ($(words $(call check_harnesses,$*)) harnesses)"
 	@set -o pipefail; python3 proofs/cbmc/run.py -j $(CBMC_JOBS) --summary $(BUILD)/check/$*/cbmc-summary.json \

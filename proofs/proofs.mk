@@ -24,7 +24,8 @@ WP_WHY3CONF  := $(WP_ROOT)/why3.conf
 # last and leave one core idle at the end); modules not named here follow, alphabetically.
 # chibios_time is the ChibiOS port's time arithmetic (hal_chibios/port/mt_chibios_time.c): the
 # port's proofs go through the same flags and the same gate as the kernel's.
-WP_ORDER     := wq mission bus sched ring objring proc laws sem time status chibios_time
+WP_ORDER     := bus wq_run mission sched sched_loop wq_timer bus_sub mission_seq mission_check wq \
+                wq_report ring objring proc laws sem time status chibios_time
 WP_ALL_MODS  := $(filter-out invoke mission_invoke bus_invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws chibios_time
 WP_MODULES   := $(filter $(WP_ALL_MODS),$(WP_ORDER)) $(filter-out $(WP_ORDER),$(WP_ALL_MODS))
 # Per proof goal; smoke tests have their own limit (-wp-smoke-timeout, 2 s by default). The
@@ -72,7 +73,9 @@ WP_MODEL_objring := Typed+cast
 # objects are only ever accessed with their own type; gate.py accepts exactly these casts.
 WP_MODEL_wq := Typed+cast
 WP_MODEL_bus     := Typed+cast
-wp_model      = $(or $(WP_MODEL_$(1)),Typed)
+# A file of a module split over several files (wq_timer.c of wq) takes its module's model: the
+# module is the part of the file name before the first '_'.
+wp_model      = $(or $(WP_MODEL_$(1)),$(WP_MODEL_$(firstword $(subst _, ,$(1)))),Typed)
 
 # WP_SMOKE=no drops the smoke tests (only for the prover-diversity runs, which compare goals).
 WP_SMOKE     ?= yes

@@ -66,7 +66,7 @@ MUTANTS = os.path.join(ROOT, "proofs", "mutants.json")
 TOOLS = ("wp", "cbmc")
 # A mutant's CBMC property run may take longer than the unmutated one (a failing property's
 # trace) and in CI it runs beside the other proof parts: mt_sched_run's took 716 s under load
-# here, over run.py's default 600 s. A time-out is still no verdict, never an acceptance.
+# here, over run.py's former default of 600 s. A time-out is still no verdict, never an acceptance.
 MUTANT_CBMC_TIMEOUT = "1800"
 TOOL_NAME = {"wp": "WP", "cbmc": "CBMC"}
 

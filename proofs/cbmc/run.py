@@ -284,8 +284,11 @@ def main():
     ap.add_argument("-j", type=int, default=2)
     ap.add_argument("--max", action="store_true", help="capacity-maximum tier (CBMC_BIG=1)")
     ap.add_argument("--summary", default=None)
-    ap.add_argument("--timeout", type=float, default=float(os.environ.get("CBMC_TIMEOUT", "600")),
-                    help="per harness, seconds (default: CBMC_TIMEOUT, else 600)")
+    # A hang detector, not a budget: the slowest harness, mt_mission_set_current, took 674 s of
+    # CPU for its property and coverage runs when recorded (records.json), which a fresh run
+    # (make prove-cold, or an edit of the mission files) must be able to finish.
+    ap.add_argument("--timeout", type=float, default=float(os.environ.get("CBMC_TIMEOUT", "1200")),
+                    help="per harness, seconds (default: CBMC_TIMEOUT, else 1200)")
     ap.add_argument("--harnesses", metavar="FILE", help="the harnesses to run, one a line")
     args = ap.parse_args()
 
@@ -316,10 +319,15 @@ def main():
         return 2
     print(gen.stdout.strip().splitlines()[-1])
     # missing proofs: every public kernel function with a contract, and every function the
-    # public headers declare (with or without a contract), needs a folder
+    # public headers declare (with or without a contract), needs a folder. A kernel-internal
+    # function (declared in kernel/src/, e.g. mt_wq_schedule_slot_i in mt_wq_int.h: a helper
+    # that two files of a split module share) is checked, like a static helper, inside the
+    # harnesses of the public functions that call it (its body is linked, never stubbed), and
+    # its contract is proved by WP.
     manifest = json.load(open(os.path.join(ROOT, "build/proof/cbmc/gen/manifest.json")))
     public = {f for f, v in manifest["functions"].items()
-              if not v["static"] and f not in manifest["stubs"] and f != "mt_port_halt"}
+              if not v["static"] and f not in manifest["stubs"] and f != "mt_port_halt"
+              and not re.search(r"(^|/)kernel/src/", v["file"])}
     missing = sorted((public | header_functions()) - set(proof_names()))
     if missing:
         print(f"cbmc: public functions without a proof: {', '.join(missing)}")
