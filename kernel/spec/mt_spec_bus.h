@@ -1,14 +1,17 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file mt_spec_bus.h
- * @brief ACSL logic for the topic bus (mt/bus.h).
+ * @brief ACSL logic for the topic bus (mt/bus.h): the wrap-free arithmetic, the topic and
+ *        subscriber predicates, the clauses the publish forms share, and the bus's lemmas.
  *
  * Generations are uint32 values that wrap from 0xFFFFFFFF to 0. Every
  * distance is computed by a case split, never by a wrapping subtraction, so
- * each formula below is also the C expression (kernel/src/bus.c) and no
+ * each formula below is also the C expression (kernel/src/bus.c, bus_sub.c) and no
  * intermediate value leaves [0, 2^32).
  *
- * Only ACSL lives here: to a C compiler this header is empty.
+ * Only ACSL lives here: to a C compiler this header is empty. mt/bus.h includes it after
+ * its types (the predicates read mt_topic_t and mt_sub_t); the ghost lemmas are proved by WP
+ * in each file that includes it (bus.c, bus_sub.c) and called from bus.c's annotations.
  */
 #ifndef MT_SPEC_BUS_H
 #define MT_SPEC_BUS_H
@@ -50,6 +53,77 @@
     logic integer MtClampNext(integer last, integer iv, integer now) =
         now <= iv ? now :
         (last + iv > now ? now : (last + iv < now - iv ? now - iv : last + iv));
+*/
+
+/* MtTopicBehind: some registered reliable subscriber has not consumed the oldest queued
+ * message. */
+/*@ predicate MtTopicInv(mt_topic_t *t) =
+        \valid(t) &&
+        1 <= t->size <= MT_CFG_BUS_MAX_MSG && 1 <= t->qlen <= MT_CFG_BUS_MAX_QUEUE &&
+        t->head < t->qlen && t->published <= 1 && t->reliable <= 1 &&
+        t->nnotify <= MT_CFG_BUS_MAX_NOTIFY && t->nrel <= MT_CFG_BUS_MAX_RELIABLE &&
+        (t->reliable == 0 ==> t->nrel == 0) &&
+        \valid(t->buf + (0 .. t->size * t->qlen - 1)) &&
+        \separated(t, t->buf + (0 .. t->size * t->qlen - 1));
+
+    predicate MtSubInv(mt_sub_t *s) =
+        \valid(s) && MtTopicInv(s->topic) && \separated(s, s->topic) &&
+        \separated(s, s->topic->buf + (0 .. s->topic->size * s->topic->qlen - 1)) &&
+        s->rel <= s->topic->nrel && s->notify <= s->topic->nnotify &&
+        MtSemInv(&s->sem);
+
+    predicate MtTopicBehind(mt_topic_t *t) =
+        \exists integer i; 0 <= i < t->nrel && MtGenDist(t->gen, t->rel_gen[i]) >= t->qlen;
+
+    predicate MtNotifyRegistered(mt_topic_t *t, mt_bus_notify_fn_t fn, void *arg) =
+        \exists integer i; 0 <= i < t->nnotify && t->notify_fn[i] == fn && t->notify_arg[i] == arg;
+
+    logic integer MtSubPending(mt_sub_t *s) = MtGenDist(s->topic->gen, s->gen);
+
+*/
+
+/* Clauses that mt_topic_publish_i, mt_topic_publish and mt_topic_publish_isr state alike
+ * (requires msg: MtPublishMsg; the task and ISR forms' status, generation and refused
+ * postconditions: MtPublishStatus, MtPublishGeneration, MtPublishRefused, with L1 the state
+ * before the call and L2 the state after it). */
+/*@ predicate MtPublishMsg(mt_topic_t *t, uint8_t *msg, integer size) =
+        size == t->size ==> \valid_read(msg + (0 .. size - 1)) &&
+        \separated(msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
+
+    predicate MtPublishStatus(integer r) =
+        r == MT_OK || r == MT_E_BUS_MSG_SIZE || r == MT_E_BUS_BEHIND;
+
+    predicate MtPublishGeneration{L1, L2}(mt_topic_t *t, integer r) =
+        r == MT_OK ==> \at(t->gen, L2) == MtGenNext(\at(t->gen, L1));
+
+    predicate MtPublishRefused{L1, L2}(mt_topic_t *t, integer r) =
+        r != MT_OK ==> \at(t->gen, L2) == \at(t->gen, L1) &&
+                       \at(t->rejected, L2) == MtSatInc(\at(t->rejected, L1));
+*/
+
+/* Lemma (ghost function, proved by WP, called only from annotations). */
+/*@ ghost
+  /@ requires 0 <= a <= b;
+     requires h >= 1;
+     assigns \nothing;
+     ensures a * h <= b * h;
+  @/
+  static void mul_mono_lemma(uint32_t a, uint32_t b, uint32_t h) { }
+*/
+
+/* Lemma (ghost function, proved by WP): the topic invariant from its parts, in a small
+ * context (the parts are discharged at the call site after the chain of stores). */
+/*@ ghost
+  /@ requires \valid(t);
+     requires 1 <= t->size <= MT_CFG_BUS_MAX_MSG && 1 <= t->qlen <= MT_CFG_BUS_MAX_QUEUE;
+     requires t->head < t->qlen && t->published <= 1 && t->reliable <= 1;
+     requires t->nnotify == 0 && t->nrel == 0;
+     requires \valid(t->buf + (0 .. t->size * t->qlen - 1));
+     requires \separated(t, t->buf + (0 .. t->size * t->qlen - 1));
+     assigns \nothing;
+     ensures MtTopicInv(t);
+  @/
+  static void topic_inv_intro(mt_topic_t *t) { }
 */
 
 #endif /* MT_SPEC_BUS_H */

@@ -1,21 +1,22 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file bus.c
- * @brief Topic bus (see mt/bus.h): publishers under the kernel lock, lock-free
- *        subscriber copies checked by per-slot stamps (seqlock).
+ * @brief Topic bus (see mt/bus.h), the side under the kernel lock: topic set-up, publishers,
+ *        notifiers, and the subscriber registrations and poll. The lock-free subscriber copies,
+ *        checked by per-slot stamps (seqlock), are in bus_sub.c.
  */
 #include "mt/bus.h"
 
 #include "mt_atomic.h"
+#include "mt_bus_int.h"
 #include "mt_bus_invoke.h"
+#include "mt_sat.h"
 
 /* ------------------------------------------------------------------------------------------
- * Wrap-free arithmetic: each helper is its logic twin in mt_spec_bus.h, by case split. */
+ * Wrap-free arithmetic: each helper is its logic twin in mt_spec_bus.h, by case split
+ * (the mt_bus_ ones: contracts in mt_bus_int.h). */
 
-/*@ assigns \nothing;
-    ensures \result == MtGenDist(a, b);
-*/
-static uint32_t gen_dist(uint32_t a, uint32_t b)
+uint32_t mt_bus_gen_dist(uint32_t a, uint32_t b)
 {
     /* a < b: the distance crosses the wrap, a + 2^32 - b, computed without leaving 32 bits */
     // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
@@ -31,15 +32,6 @@ static uint32_t gen_next(uint32_t g)
     return (g < 0xFFFFFFFFu) ? (g + 1u) : 0u;
 }
 
-/*@ assigns \nothing;
-    ensures \result == MtGenBack(g, d);
-*/
-static uint32_t gen_back(uint32_t g, uint32_t d)
-{
-    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
-    return (g >= d) ? (g - d) : (((0xFFFFFFFFu - d) + g) + 1u);
-}
-
 /*@ requires h < q <= MT_CFG_BUS_MAX_QUEUE;
     assigns \nothing;
     ensures \result == MtSlotNext(h, q);
@@ -51,61 +43,12 @@ static uint32_t slot_next(uint32_t h, uint32_t q)
     return ((h + 1u) < q) ? (h + 1u) : 0u;
 }
 
-/*@ requires h < q <= MT_CFG_BUS_MAX_QUEUE;
-    requires d < q;
-    assigns \nothing;
-    ensures \result == MtSlotBack(h, d, q);
-    ensures \result < q;
-*/
-static uint32_t slot_back(uint32_t h, uint32_t d, uint32_t q)
-{
-    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
-    return (h >= d) ? (h - d) : ((h + q) - d);
-}
-
-/*@ requires 1 <= p && 1 <= q;
-    assigns \nothing;
-    ensures \result == MtNextDist(p, q);
-*/
-static uint32_t next_dist(uint32_t p, uint32_t q)
-{
-    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
-    return (p > q) ? (q - 1u) : (p - 1u);
-}
-
-/*@ assigns \nothing;
-    ensures \result == MtSatInc(x);
-*/
-static uint32_t sat_inc(uint32_t x)
-{
-    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
-    return (x < 0xFFFFFFFFu) ? (x + 1u) : x;
-}
-
-/*@ assigns \nothing;
-    ensures \result == MtSatAdd(x, k);
-*/
-static uint32_t sat_add(uint32_t x, uint32_t k)
-{
-    // cppcheck-suppress misra-c2012-12.1 ; D-102 fully parenthesised; addon false positive
-    return (k <= (0xFFFFFFFFu - x)) ? (x + k) : 0xFFFFFFFFu;
-}
-
-/*@ assigns \nothing;
-    ensures \result == \true <==> MtDue(last, iv, now);
-*/
-static bool interval_due(uint64_t last, uint32_t iv, uint64_t now)
+bool mt_bus_interval_due(uint64_t last, uint32_t iv, uint64_t now)
 {
     return (iv == 0u) || ((now >= last) && ((now - last) >= iv));
 }
 
-/* uORB SubscriptionInterval: last + iv, clamped to [now - iv, now]; now itself while
- * now <= iv (now - iv would wrap). No sum leaves 64 bits: last + iv is formed only
- * when last <= now - iv. */
-/*@ assigns \nothing;
-    ensures \result == MtClampNext(last, iv, now);
-*/
-static uint64_t clamp_next(uint64_t last, uint32_t iv, uint64_t now)
+uint64_t mt_bus_clamp_next(uint64_t last, uint32_t iv, uint64_t now)
 {
     uint64_t r;
 
@@ -122,26 +65,7 @@ static uint64_t clamp_next(uint64_t last, uint32_t iv, uint64_t now)
 /* ------------------------------------------------------------------------------------------
  * Slots and bytes */
 
-/* Lemma (ghost function, proved by WP, called only from annotations). */
-/*@ ghost
-  /@ requires 0 <= a <= b;
-     requires h >= 1;
-     assigns \nothing;
-     ensures a * h <= b * h;
-  @/
-  static void mul_mono_lemma(uint32_t a, uint32_t b, uint32_t h) { }
-*/
-
-/* Address of slot `slot`. */
-/*@ requires MtTopicInv(t);
-    requires slot < t->qlen;
-    assigns \nothing;
-    ensures \result == t->buf + slot * t->size;
-    ensures in_storage: slot * t->size + t->size <= t->size * t->qlen;
-    ensures \valid(\result + (0 .. t->size - 1));
-*/
-// cppcheck-suppress misra-c2012-5.9 ; D-106 module-local helper, one per translation unit
-static uint8_t *slot_ptr(const mt_topic_t *t, uint32_t slot)
+uint8_t *mt_bus_slot_ptr(const mt_topic_t *t, uint32_t slot)
 {
     //@ ghost mul_mono_lemma(slot + 1u, t->qlen, t->size);
     return t->buf + ((uint64_t)slot * t->size);
@@ -165,27 +89,6 @@ static void write_bytes(uint8_t *dst, const uint8_t *src, uint32_t n)
     */
     for (k = 0u; k < n; k++) {
         mt_store_relaxed_u8(&dst[k], src[k]);
-    }
-}
-
-/* Copy n message bytes out of a slot (subscriber, no lock): relaxed loads, ordered
- * before the stamp re-check by mt_seq_recheck_u32's acquire fence. */
-/*@ requires \valid(dst + (0 .. n - 1)) && \valid_read(src + (0 .. n - 1));
-    requires \separated(dst + (0 .. n - 1), src + (0 .. n - 1));
-    assigns dst[0 .. n - 1];
-    ensures \forall integer k; 0 <= k < n ==> dst[k] == src[k];
-*/
-static void read_bytes(uint8_t *dst, const uint8_t *src, uint32_t n)
-{
-    uint32_t k;
-
-    /*@ loop invariant 0 <= k <= n;
-        loop invariant \forall integer j; 0 <= j < k ==> dst[j] == src[j];
-        loop assigns k, dst[0 .. n - 1];
-        loop variant n - k;
-    */
-    for (k = 0u; k < n; k++) {
-        dst[k] = mt_load_relaxed_u8(&src[k]);
     }
 }
 
@@ -242,21 +145,6 @@ static mt_status_t check_desc(const mt_topic_desc_t *d, const void *storage,
     }
     return st;
 }
-
-/* Lemma (ghost function, proved by WP): the topic invariant from its parts, in a small
- * context (the parts are discharged at the call site after the chain of stores). */
-/*@ ghost
-  /@ requires \valid(t);
-     requires 1 <= t->size <= MT_CFG_BUS_MAX_MSG && 1 <= t->qlen <= MT_CFG_BUS_MAX_QUEUE;
-     requires t->head < t->qlen && t->published <= 1 && t->reliable <= 1;
-     requires t->nnotify == 0 && t->nrel == 0;
-     requires \valid(t->buf + (0 .. t->size * t->qlen - 1));
-     requires \separated(t, t->buf + (0 .. t->size * t->qlen - 1));
-     assigns \nothing;
-     ensures MtTopicInv(t);
-  @/
-  static void topic_inv_intro(mt_topic_t *t) { }
-*/
 
 /* Fill in a validated topic (scalar arguments: no read of the description after a store
  * into the topic, so no frame goal between the two objects). */
@@ -334,7 +222,7 @@ static uint32_t any_behind(const mt_topic_t *t)
         loop variant t->nrel - i;
     */
     for (i = 0u; i < t->nrel; i++) {
-        if (gen_dist(t->gen, mt_load_acquire_u32(&t->rel_gen[i])) >= t->qlen) {
+        if (mt_bus_gen_dist(t->gen, mt_load_acquire_u32(&t->rel_gen[i])) >= t->qlen) {
             return 1u;
         }
     }
@@ -349,7 +237,7 @@ static uint32_t any_behind(const mt_topic_t *t)
 // cppcheck-suppress misra-c2012-5.9 ; D-106 module-local helper, one per translation unit
 static void note_rejected(mt_topic_t *t)
 {
-    t->rejected = sat_inc(t->rejected);
+    t->rejected = mt_inc_sat_u32(t->rejected);
 }
 
 /* Write msg into the slot after head and publish it: stamp (then a release fence),
@@ -383,11 +271,11 @@ static void put(mt_topic_t *t, const uint8_t *msg)
     uint32_t nh = slot_next(t->head, t->qlen);
 
     mt_seq_stamp_u32(&t->stamp[nh], ng);
-    write_bytes(slot_ptr(t, nh), msg, t->size);
+    write_bytes(mt_bus_slot_ptr(t, nh), msg, t->size);
     mt_store_release_u32(&t->head, nh);
     mt_store_release_u32(&t->published, 1u);
     mt_store_release_u32(&t->gen, ng);
-    t->publishes = sat_inc(t->publishes);
+    t->publishes = mt_inc_sat_u32(t->publishes);
 }
 
 /* Notifier i: pass its gates or count the hold-back. */
@@ -414,13 +302,14 @@ static void notify_one(mt_topic_t *t, uint32_t i)
 {
     bool fire = false;
 
-    if (gen_dist(t->gen, t->notify_last_gen[i]) >= t->notify_min_updates[i]) {
+    if (mt_bus_gen_dist(t->gen, t->notify_last_gen[i]) >= t->notify_min_updates[i]) {
         if (t->notify_interval_us[i] == 0u) {
             fire = true;
         } else {
             uint64_t now = mt_port_now_us();
-            if (interval_due(t->notify_last_us[i], t->notify_interval_us[i], now)) {
-                t->notify_last_us[i] = clamp_next(t->notify_last_us[i], t->notify_interval_us[i], now);
+            if (mt_bus_interval_due(t->notify_last_us[i], t->notify_interval_us[i], now)) {
+                t->notify_last_us[i] =
+                    mt_bus_clamp_next(t->notify_last_us[i], t->notify_interval_us[i], now);
                 fire = true;
             }
         }
@@ -429,11 +318,11 @@ static void notify_one(mt_topic_t *t, uint32_t i)
      * test keeps the dispatcher's requires local instead of in the topic invariant */
     if (fire && (t->notify_fn[i] != (mt_bus_notify_fn_t)0)) {
         t->notify_last_gen[i] = t->gen;
-        t->notify_calls[i] = sat_inc(t->notify_calls[i]);
-        t->notified = sat_inc(t->notified);
+        t->notify_calls[i] = mt_inc_sat_u32(t->notify_calls[i]);
+        t->notified = mt_inc_sat_u32(t->notified);
         mt_bus_invoke_notify(t->notify_fn[i], t->notify_arg[i]);
     } else {
-        t->notify_gated[i] = sat_inc(t->notify_gated[i]);
+        t->notify_gated[i] = mt_inc_sat_u32(t->notify_gated[i]);
     }
 }
 
@@ -608,27 +497,7 @@ mt_status_t mt_topic_notify_add(mt_topic_t *t, mt_bus_notify_fn_t fn, void *arg,
 }
 
 /* ------------------------------------------------------------------------------------------
- * Subscribers */
-
-void mt_sub_init(mt_sub_t *s, mt_topic_t *t, uint32_t interval_us)
-{
-    /* published before gen: a publish between the two loads leaves the new message not
-     * pending (it was published while the subscriber attached), never a slot unwritten */
-    uint32_t published = mt_load_acquire_u32(&t->published);
-    uint32_t gen = mt_load_acquire_u32(&t->gen);
-
-    s->topic = t;
-    s->gen = (published != 0u) ? gen_back(gen, 1u) : gen;
-    s->interval_us = interval_us;
-    s->last_us = 0u;
-    s->received = 0u;
-    s->missed = 0u;
-    s->skipped = 0u;
-    s->torn = 0u;
-    s->rel = 0u;
-    s->notify = 0u;
-    mt_sem_init(&s->sem, false);
-}
+ * Subscribers: registrations and poll (lock held; the copies are in bus_sub.c) */
 
 mt_status_t mt_sub_reliable(mt_sub_t *s)
 {
@@ -674,171 +543,6 @@ mt_status_t mt_sub_poll_enable(mt_sub_t *s)
     }
     mt_port_unlock();
     return st;
-}
-
-bool mt_sub_updated(const mt_sub_t *s, uint64_t now_us)
-{
-    uint32_t gen = mt_load_acquire_u32(&s->topic->gen);
-
-    return (gen != s->gen) && interval_due(s->last_us, s->interval_us, now_us);
-}
-
-/* One copy attempt of the message d before the newest (generation gen, slot head, as
- * loaded by the caller): check the slot's stamp, copy, re-check the stamp. 1: out holds
- * that message whole; 0: the slot held or received another message (retry). */
-/*@ requires MtTopicInv(t);
-    requires head < t->qlen && d < t->qlen;
-    requires \valid(out + (0 .. t->size - 1));
-    requires \separated(out + (0 .. t->size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
-    assigns out[0 .. t->size - 1];
-    ensures \result == 0 || \result == 1;
-    ensures \result == 1 ==> \forall integer k; 0 <= k < t->size ==>
-        out[k] == t->buf[MtSlotBack(head, d, t->qlen) * t->size + k];
-    ensures in_storage: MtSlotBack(head, d, t->qlen) * t->size + t->size <= t->size * t->qlen;
-*/
-static uint32_t try_copy(const mt_topic_t *t, uint32_t gen, uint32_t head, uint32_t d,
-                         uint8_t *out)
-{
-    uint32_t slot = slot_back(head, d, t->qlen);
-    uint32_t want = gen_back(gen, d);
-
-    if (mt_load_acquire_u32(&t->stamp[slot]) != want) {
-        return 0u; /* already overwritten, or head and gen from different publishes */
-    }
-    read_bytes(out, slot_ptr(t, slot), t->size);
-    /* a publisher that wrote any of these bytes stamped the slot before it */
-    return (mt_seq_recheck_u32(&t->stamp[slot]) == want) ? 1u : 0u;
-}
-
-/* Consume up to generation g: lost messages missed, skipped ones skipped, one received
- * when fresh; a reliable subscriber publishes its progress (release). */
-/*@ requires MtSubInv(s);
-    requires fresh == 0 || fresh == 1;
-    assigns s->gen, s->missed, s->skipped, s->received,
-            s->topic->rel_gen[0 .. MT_CFG_BUS_MAX_RELIABLE - 1];
-    ensures MtSubInv(s);
-    ensures s->gen == g;
-    ensures s->missed == MtSatAdd(\old(s->missed), lost);
-    ensures s->skipped == MtSatAdd(\old(s->skipped), skipped);
-    ensures s->received == (fresh == 1 ? MtSatInc(\old(s->received)) : \old(s->received));
-    ensures s->rel != 0 ==> s->topic->rel_gen[s->rel - 1] == g;
-    ensures topic_kept: s->topic == \old(s->topic) && s->topic->gen == \old(s->topic->gen) &&
-        s->topic->head == \old(s->topic->head) && s->topic->size == \old(s->topic->size) &&
-        s->topic->qlen == \old(s->topic->qlen) && s->topic->buf == \old(s->topic->buf);
-*/
-static void consume(mt_sub_t *s, uint32_t g, uint32_t lost, uint32_t skipped, uint32_t fresh)
-{
-    s->gen = g;
-    if (s->rel != 0u) {
-        mt_store_release_u32(&s->topic->rel_gen[s->rel - 1u], g);
-    }
-    s->missed = sat_add(s->missed, lost);
-    s->skipped = sat_add(s->skipped, skipped);
-    if (fresh != 0u) {
-        s->received = sat_inc(s->received);
-    }
-}
-
-/*@ requires MtSubInv(s);
-    assigns s->last_us;
-    ensures MtSubInv(s);
-    ensures s->last_us == MtClampNext(\old(s->last_us), s->interval_us, now);
-*/
-static void note_update(mt_sub_t *s, uint64_t now)
-{
-    s->last_us = clamp_next(s->last_us, s->interval_us, now);
-}
-
-/*@ requires MtSubInv(s);
-    assigns s->torn;
-    ensures MtSubInv(s);
-    ensures s->torn == MtSatInc(\old(s->torn));
-*/
-static void note_torn(mt_sub_t *s)
-{
-    s->torn = sat_inc(s->torn);
-}
-
-mt_status_t mt_sub_copy_next(mt_sub_t *s, void *out, uint32_t size, uint64_t now_us)
-{
-    const mt_topic_t *t = s->topic;
-    uint32_t tries;
-
-    if (size != t->size) {
-        return MT_E_BUS_MSG_SIZE;
-    }
-    /*@ loop invariant 0 <= tries <= MT_CFG_BUS_COPY_TRIES;
-        loop invariant MtSubInv(s);
-        loop invariant s->gen == \at(s->gen, Pre) && s->torn == \at(s->torn, Pre);
-        loop invariant buf_kept: \forall integer k; 0 <= k < s->topic->size * s->topic->qlen ==>
-            s->topic->buf[k] == \at(s->topic->buf[k], Pre);
-        loop invariant looked: tries != 0 ==> s->topic->gen != s->gen;
-        loop assigns tries, ((uint8_t *)out)[0 .. size - 1];
-        loop variant MT_CFG_BUS_COPY_TRIES - tries;
-    */
-    for (tries = 0u; tries < MT_CFG_BUS_COPY_TRIES; tries++) {
-        uint32_t gen = mt_load_acquire_u32(&t->gen);
-        uint32_t head = mt_load_acquire_u32(&t->head);
-        uint32_t pending = gen_dist(gen, s->gen);
-        uint32_t d;
-
-        if (pending == 0u) {
-            return MT_E_EMPTY;
-        }
-        /* more than qlen behind: the oldest retained message, qlen - 1 before the newest */
-        d = next_dist(pending, t->qlen);
-        if (try_copy(t, gen, head, d, (uint8_t *)out) != 0u) {
-            /*@ assert got: \forall integer k; 0 <= k < t->size ==>
-                    \let o = MtSlotBack(head, d, t->qlen) * t->size + k;
-                    ((uint8_t *)out)[k] == t->buf[o] && t->buf[o] == \at(s->topic->buf[o], Pre); */
-            uint32_t lost = (pending > t->qlen) ? (pending - t->qlen) : 0u;
-            consume(s, gen_back(gen, d), lost, 0u, 1u);
-            note_update(s, now_us);
-            return (lost != 0u) ? MT_W_BUS_MISSED : MT_OK;
-        }
-    }
-    note_torn(s);
-    return MT_E_BUS_TORN;
-}
-
-mt_status_t mt_sub_copy_latest(mt_sub_t *s, void *out, uint32_t size, uint64_t now_us)
-{
-    const mt_topic_t *t = s->topic;
-    uint32_t tries;
-
-    if (size != t->size) {
-        return MT_E_BUS_MSG_SIZE;
-    }
-    if (mt_load_acquire_u32(&t->published) == 0u) {
-        return MT_E_EMPTY;
-    }
-    /*@ loop invariant 0 <= tries <= MT_CFG_BUS_COPY_TRIES;
-        loop invariant MtSubInv(s);
-        loop invariant s->gen == \at(s->gen, Pre) && s->torn == \at(s->torn, Pre);
-        loop invariant buf_kept: \forall integer k; 0 <= k < s->topic->size * s->topic->qlen ==>
-            s->topic->buf[k] == \at(s->topic->buf[k], Pre);
-        loop assigns tries, ((uint8_t *)out)[0 .. size - 1];
-        loop variant MT_CFG_BUS_COPY_TRIES - tries;
-    */
-    for (tries = 0u; tries < MT_CFG_BUS_COPY_TRIES; tries++) {
-        uint32_t gen = mt_load_acquire_u32(&t->gen);
-        uint32_t head = mt_load_acquire_u32(&t->head);
-        uint32_t pending = gen_dist(gen, s->gen);
-
-        if (try_copy(t, gen, head, 0u, (uint8_t *)out) != 0u) {
-            /*@ assert got: \forall integer k; 0 <= k < t->size ==>
-                    \let o = MtSlotBack(head, 0, t->qlen) * t->size + k;
-                    ((uint8_t *)out)[k] == t->buf[o] && t->buf[o] == \at(s->topic->buf[o], Pre); */
-            /* overwritten before this copy looked: missed; still retained: skipped */
-            uint32_t lost = (pending > t->qlen) ? (pending - t->qlen) : 0u;
-            uint32_t passed = (pending == 0u) ? 0u : ((pending - 1u) - lost);
-            consume(s, gen, lost, passed, (pending != 0u) ? 1u : 0u);
-            note_update(s, now_us);
-            return (lost != 0u) ? MT_W_BUS_MISSED : MT_OK;
-        }
-    }
-    note_torn(s);
-    return MT_E_BUS_TORN;
 }
 
 mt_status_t mt_sub_poll(mt_sub_t *s, uint64_t timeout_us)

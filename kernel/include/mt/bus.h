@@ -28,7 +28,7 @@
  *   message. Why: the alternative (copy under the kernel lock) keeps interrupts
  *   masked for up to MT_CFG_BUS_MAX_MSG bytes per subscriber copy, which is the
  *   interrupt latency uORB pays; here only the publisher's own copy runs with the
- *   lock held. The interleavings are checked by tla/TopicBus.tla (NoTornRead); the
+ *   lock held. The interleavings are checked by tla/Bus.tla (NoTornRead); the
  *   contracts below are sequential (assumption C2) and leave the outcome of the stamp
  *   re-check free (assumption C3).
  * - Missed messages, defined: a message is missed by a subscriber when it had left
@@ -38,7 +38,7 @@
  *   ones to `missed`. Messages that copy_latest passes over while they are still
  *   retained are counted in `skipped`, not in `missed`: the subscriber chose the
  *   newest. So every message published after a subscriber's init is exactly one of
- *   received, missed, skipped or pending (TopicBus.tla, AccountingExact).
+ *   received, missed, skipped or pending (Bus.tla, AccountingExact).
  * - Rate-limited subscriptions (uORB SubscriptionInterval): with interval_us > 0,
  *   mt_sub_updated() reports an update only once interval_us passed since the last
  *   update; every successful copy moves the last-update time forward by one interval,
@@ -71,7 +71,6 @@
 #include "mt/status.h"
 #include "mt_port.h"
 #include "mt_spec.h"
-#include "mt_spec_bus.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -151,32 +150,9 @@ typedef struct {
     mt_sem_t sem;         /**< poll wake-up */
 } mt_sub_t;
 
-/* MtTopicBehind: some registered reliable subscriber has not consumed the oldest queued
- * message. */
-/*@ predicate MtTopicInv(mt_topic_t *t) =
-        \valid(t) &&
-        1 <= t->size <= MT_CFG_BUS_MAX_MSG && 1 <= t->qlen <= MT_CFG_BUS_MAX_QUEUE &&
-        t->head < t->qlen && t->published <= 1 && t->reliable <= 1 &&
-        t->nnotify <= MT_CFG_BUS_MAX_NOTIFY && t->nrel <= MT_CFG_BUS_MAX_RELIABLE &&
-        (t->reliable == 0 ==> t->nrel == 0) &&
-        \valid(t->buf + (0 .. t->size * t->qlen - 1)) &&
-        \separated(t, t->buf + (0 .. t->size * t->qlen - 1));
-
-    predicate MtSubInv(mt_sub_t *s) =
-        \valid(s) && MtTopicInv(s->topic) && \separated(s, s->topic) &&
-        \separated(s, s->topic->buf + (0 .. s->topic->size * s->topic->qlen - 1)) &&
-        s->rel <= s->topic->nrel && s->notify <= s->topic->nnotify &&
-        MtSemInv(&s->sem);
-
-    predicate MtTopicBehind(mt_topic_t *t) =
-        \exists integer i; 0 <= i < t->nrel && MtGenDist(t->gen, t->rel_gen[i]) >= t->qlen;
-
-    predicate MtNotifyRegistered(mt_topic_t *t, mt_bus_notify_fn_t fn, void *arg) =
-        \exists integer i; 0 <= i < t->nnotify && t->notify_fn[i] == fn && t->notify_arg[i] == arg;
-
-    logic integer MtSubPending(mt_sub_t *s) = MtGenDist(s->topic->gen, s->gen);
-
-*/
+/* The bus's ACSL logic and predicates (empty to a C compiler), after the types they read. */
+// cppcheck-suppress misra-c2012-20.1 ; D-107 ACSL only, included after the types it names
+#include "mt_spec_bus.h"
 
 /** Initialise a topic from its description over storage of storage_bytes bytes. [init]
  *  @retval MT_OK
@@ -239,8 +215,7 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
  *          oldest queued message (counted in rejected; nothing written). */
 /*@ requires held: MtLocked == 1;
     requires inv: MtTopicInv(t);
-    requires msg: size == t->size ==> \valid_read((uint8_t *)msg + (0 .. size - 1)) &&
-        \separated((uint8_t *)msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
+    requires msg: MtPublishMsg(t, (uint8_t *)msg, size);
     assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
             t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notified,
             t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
@@ -290,8 +265,7 @@ mt_status_t mt_topic_publish_i(mt_topic_t *t, const void *msg, uint32_t size);
 /** mt_topic_publish_i() from task context (takes the kernel lock). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtTopicInv(t);
-    requires msg: size == t->size ==> \valid_read((uint8_t *)msg + (0 .. size - 1)) &&
-        \separated((uint8_t *)msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
+    requires msg: MtPublishMsg(t, (uint8_t *)msg, size);
     assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
             t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notified,
             t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
@@ -300,18 +274,16 @@ mt_status_t mt_topic_publish_i(mt_topic_t *t, const void *msg, uint32_t size);
             t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtTopicInv(t);
-    ensures status: \result == MT_OK || \result == MT_E_BUS_MSG_SIZE || \result == MT_E_BUS_BEHIND;
-    ensures generation: \result == MT_OK ==> t->gen == MtGenNext(\old(t->gen));
-    ensures refused: \result != MT_OK ==> t->gen == \old(t->gen) &&
-                     t->rejected == MtSatInc(\old(t->rejected));
+    ensures status: MtPublishStatus(\result);
+    ensures generation: MtPublishGeneration{Old, Here}(t, \result);
+    ensures refused: MtPublishRefused{Old, Here}(t, \result);
 */
 mt_status_t mt_topic_publish(mt_topic_t *t, const void *msg, uint32_t size);
 
 /** mt_topic_publish_i() from an interrupt handler. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtTopicInv(t);
-    requires msg: size == t->size ==> \valid_read((uint8_t *)msg + (0 .. size - 1)) &&
-        \separated((uint8_t *)msg + (0 .. size - 1), t, t->buf + (0 .. t->size * t->qlen - 1));
+    requires msg: MtPublishMsg(t, (uint8_t *)msg, size);
     assigns t->gen, t->head, t->published, t->stamp[0 .. MT_CFG_BUS_MAX_QUEUE - 1],
             t->buf[0 .. t->size * t->qlen - 1], t->publishes, t->rejected, t->notified,
             t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
@@ -320,10 +292,9 @@ mt_status_t mt_topic_publish(mt_topic_t *t, const void *msg, uint32_t size);
             t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtTopicInv(t);
-    ensures status: \result == MT_OK || \result == MT_E_BUS_MSG_SIZE || \result == MT_E_BUS_BEHIND;
-    ensures generation: \result == MT_OK ==> t->gen == MtGenNext(\old(t->gen));
-    ensures refused: \result != MT_OK ==> t->gen == \old(t->gen) &&
-                     t->rejected == MtSatInc(\old(t->rejected));
+    ensures status: MtPublishStatus(\result);
+    ensures generation: MtPublishGeneration{Old, Here}(t, \result);
+    ensures refused: MtPublishRefused{Old, Here}(t, \result);
 */
 mt_status_t mt_topic_publish_isr(mt_topic_t *t, const void *msg, uint32_t size);
 
