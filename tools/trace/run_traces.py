@@ -91,11 +91,12 @@ def build(out):
                     os.path.join(KSRC, "objring.c"), os.path.join(KSRC, "status.c"),
                     "-o", ring], check=True)
     sem = os.path.join(out, "sem_trace")
-    # port.c also holds the proc and work-queue threads, hence proc.c, invoke.c, time.c and wq.c
+    # port.c also holds the proc and work-queue threads, hence proc.c, invoke.c, time.c and wq*.c
+    wq_srcs = [os.path.join(KSRC, f) for f in ("wq.c", "wq_timer.c", "wq_run.c", "wq_report.c")]
     subprocess.run(cc + KINC + ["-I" + os.path.join(ROOT, "hal_posix"),
                                 os.path.join(HERE, "sem_trace.c"), os.path.join(KSRC, "sem.c"),
                                 os.path.join(KSRC, "proc.c"), os.path.join(KSRC, "invoke.c"),
-                                os.path.join(KSRC, "time.c"), os.path.join(KSRC, "wq.c"),
+                                os.path.join(KSRC, "time.c")] + wq_srcs + [
                                 os.path.join(ROOT, "hal_posix", "port.c"),
                                 "-Wl," + ",".join("--wrap=" + w for w in WRAP),
                                 "-pthread", "-o", sem], check=True)

@@ -24,7 +24,7 @@
  *   MT_W_WQ_MERGED, counted in the item's and the queue's `merged` (PX4
  *   merges silently). Scheduling an item while it runs queues it again: it
  *   runs once more afterwards. Every activation is therefore a run, a counted
- *   merge, or still queued (tla/WorkQueue.tla, NoLostActivation).
+ *   merge, or still queued (tla/Wq.tla, NoLostActivation).
  * - Delayed and interval items: a per-slot timer (the queue's bounded timer
  *   registry) that mt_wq_timer_tick_i() checks; register mt_wq_timer_proc
  *   with the queue as argument in the 1 kHz timer proc set. Interval items
@@ -44,7 +44,7 @@
  * - Contracts are sequential (assumption C2); where the lock is released
  *   (around a run and while a single-shot caller waits) the helpers' contracts
  *   allow for what other contexts may change (assumption W2). The interleavings are checked by
- *   tla/WorkQueue.tla.
+ *   tla/Wq.tla.
  */
 #ifndef MT_WQ_H
 #define MT_WQ_H
@@ -172,62 +172,8 @@ typedef struct {
     uint32_t refused;
 } mt_wq_report_t;
 
-/*@ logic integer MtWqRel(mt_wq_t *q, integer p) =
-        p >= q->head ? p - q->head : p + MT_CFG_WQ_MAX_ITEMS - q->head;
-
-    logic integer MtWqTail(mt_wq_t *q) =
-        q->head + q->count < MT_CFG_WQ_MAX_ITEMS ? q->head + q->count
-                                                  : q->head + q->count - MT_CFG_WQ_MAX_ITEMS;
-
-    predicate MtWqQueued(mt_wq_t *q, integer s) = MtWqRel(q, q->where[s]) < q->count;
-
-    predicate MtWqFifo(mt_wq_t *q) =
-        q->nitems <= MT_CFG_WQ_MAX_ITEMS && q->head < MT_CFG_WQ_MAX_ITEMS &&
-        q->count <= MT_CFG_WQ_MAX_ITEMS &&
-        (\forall integer p; 0 <= p < MT_CFG_WQ_MAX_ITEMS ==>
-            q->order[p] < MT_CFG_WQ_MAX_ITEMS && q->where[q->order[p]] == p) &&
-        (\forall integer s; 0 <= s < MT_CFG_WQ_MAX_ITEMS ==>
-            q->where[s] < MT_CFG_WQ_MAX_ITEMS && q->order[q->where[s]] == s) &&
-        (\forall integer p; 0 <= p < MT_CFG_WQ_MAX_ITEMS ==>
-            MtWqRel(q, p) < q->count ==> q->order[p] < q->nitems);
-
-    predicate MtWqSlots(mt_wq_t *q) =
-        (\forall integer s; 0 <= s < MT_CFG_WQ_MAX_ITEMS ==>
-            MtSemInv(&q->slot[s].done) && q->slot[s].shot <= MT_WQ_SHOT_DONE &&
-            q->slot[s].timer <= MT_WQ_TIMER_EVERY &&
-            (q->slot[s].timer == MT_WQ_TIMER_EVERY ==> q->slot[s].period_us >= 1)) &&
-        (\forall integer s; 0 <= s < q->nitems ==> q->slot[s].fn != \null);
-
-    predicate MtWqRunner(mt_wq_t *q) =
-        (q->running == MT_WQ_NONE || q->running < q->nitems) && q->stop <= 1;
-
-    predicate MtWqInv(mt_wq_t *q) =
-        \valid(q) && MtWqFifo(q) && MtWqSlots(q) && MtWqRunner(q) && MtSemInv(&q->wake);
-
-    predicate MtWorkAttached(mt_work_t *w) =
-        \valid_read(w) && w->wq != \null && \separated(w, w->wq) && MtWqInv(w->wq) &&
-        w->slot < w->wq->nitems;
-*/
-
-/* Every item queued at L1 is still queued at L2, at the same distance from the head: FIFO
- * order is kept (an activation only appends). No item but s became queued. Attached items
- * stay attached with their functions. */
-/*@ predicate MtWqFifoKept{L1, L2}(mt_wq_t *q) =
-        \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==> \at(MtWqQueued(q, t), L1) ==>
-            \at(MtWqQueued(q, t), L2) && \at(MtWqRel(q, q->where[t]), L2) == \at(MtWqRel(q, q->where[t]), L1);
-
-    predicate MtWqItemsKept{L1, L2}(mt_wq_t *q) =
-        \at(q->nitems, L2) >= \at(q->nitems, L1) &&
-        \forall integer t; 0 <= t < \at(q->nitems, L1) ==>
-            \at(q->slot[t].fn, L2) == \at(q->slot[t].fn, L1) && \at(q->slot[t].arg, L2) == \at(q->slot[t].arg, L1);
-
-    lemma MtWqItemsKept_trans{L1, L2, L3}: \forall mt_wq_t *q;
-        MtWqItemsKept{L1, L2}(q) ==> MtWqItemsKept{L2, L3}(q) ==> MtWqItemsKept{L1, L3}(q);
-
-    predicate MtWqIdleKept{L1, L2}(mt_wq_t *q, integer s) =
-        \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==> t != s ==>
-            !\at(MtWqQueued(q, t), L1) ==> !\at(MtWqQueued(q, t), L2);
-*/
+// cppcheck-suppress misra-c2012-20.1 ; D-107 ACSL only (empty to C), after the types it names
+#include "mt_spec_wq.h"
 
 /** Set up an empty queue whose thread is to run at base + offset (the port
  *  checks the priority when it creates the thread). [init] */
@@ -236,8 +182,7 @@ typedef struct {
     ensures inv: MtWqInv(q);
     ensures empty: q->nitems == 0 && q->count == 0 && q->running == MT_WQ_NONE && q->stop == 0;
     ensures prio: q->name == name && q->prio_base == base && q->prio_offset == offset;
-    ensures zeroed: q->stats.starts == 0 && q->stats.runs == 0 && q->stats.merged == 0 &&
-                    q->stats.missed == 0 && q->max_depth == 0 && q->refused == 0;
+    ensures zeroed: MtWqStatsFresh(&q->stats) && q->max_depth == 0 && q->refused == 0;
 */
 void mt_wq_init(mt_wq_t *q, const char *name, mt_prio_base_t base, int8_t offset);
 
@@ -256,11 +201,10 @@ void mt_work_init(mt_work_t *w, mt_work_fn_t fn, void *arg);
  *  @retval MT_E_FULL the queue holds MT_CFG_WQ_MAX_ITEMS items. */
 /*@ requires held: MtLocked == 1;
     requires inv: MtWqInv(q);
-    requires item: \valid(w) && \separated(w, q);
+    requires item: MtWorkApart(q, w);
     assigns w->wq, w->slot, q->nitems, q->slot[q->nitems];
     ensures inv: MtWqInv(q);
-    ensures others: \forall integer s; 0 <= s < \old(q->nitems) ==>
-        q->slot[s].fn == \old(q->slot[s].fn) && q->slot[s].arg == \old(q->slot[s].arg);
+    ensures others: MtWqFnsKept{Pre, Post}(q);
     behavior invalid:
       assumes w->fn == \null;
       ensures status: \result == MT_E_INVALID;
@@ -279,10 +223,8 @@ void mt_work_init(mt_work_t *w, mt_work_fn_t fn, void *arg);
       ensures attached: w->wq == q && w->slot == \old(q->nitems) && q->nitems == \old(q->nitems) + 1;
       ensures item: MtWorkAttached(w);
       ensures entry: q->slot[w->slot].fn == w->fn && q->slot[w->slot].arg == w->arg;
-      ensures idle: !MtWqQueued(q, w->slot) && q->slot[w->slot].timer == MT_WQ_TIMER_OFF &&
-                    q->slot[w->slot].shot == MT_WQ_SHOT_NONE;
-      ensures fresh: q->slot[w->slot].stats.starts == 0 && q->slot[w->slot].stats.runs == 0 &&
-                     q->slot[w->slot].stats.merged == 0 && q->slot[w->slot].stats.missed == 0;
+      ensures idle: MtWqSlotIdle(q, w->slot);
+      ensures fresh: MtWqStatsFresh(&q->slot[w->slot].stats);
     complete behaviors;
     disjoint behaviors;
 */
@@ -291,12 +233,11 @@ mt_status_t mt_wq_attach_i(mt_wq_t *q, mt_work_t *w);
 /** mt_wq_attach_i() from task context (takes the kernel lock). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    requires item: \valid(w) && \separated(w, q);
+    requires item: MtWorkApart(q, w);
     assigns w->wq, w->slot, q->nitems, q->slot[q->nitems], MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
-    ensures status: \result == MT_OK || \result == MT_E_INVALID || \result == MT_E_DUPLICATE ||
-                    \result == MT_E_FULL;
+    ensures status: MtWqAttachStatus(\result);
     ensures attached: \result == MT_OK ==> MtWorkAttached(w) && w->wq == q;
     ensures unchanged: \result != MT_OK ==> q->nitems == \old(q->nitems);
 */
@@ -319,18 +260,15 @@ mt_status_t mt_wq_attach(mt_wq_t *q, mt_work_t *w);
     behavior queue:
       assumes !MtWqQueued(w->wq, w->slot);
       ensures status: \result == MT_OK;
-      ensures tail: w->wq->count == \old(w->wq->count) + 1 &&
-                    MtWqRel(w->wq, w->wq->where[w->slot]) == \old(w->wq->count);
+      ensures tail: MtWorkAppended{Pre, Post}(w);
       ensures stamped: w->wq->slot[w->slot].queued_us == MtPortNow;
     behavior merge:
       assumes MtWqQueued(w->wq, w->slot);
       ensures status: \result == MT_W_WQ_MERGED;
       ensures same: w->wq->count == \old(w->wq->count);
       ensures counted: w->wq->slot[w->slot].stats.merged ==
-          (\old(w->wq->slot[w->slot].stats.merged) < 0xFFFFFFFF ? \old(w->wq->slot[w->slot].stats.merged) + 1
-                                                                : 0xFFFFFFFF);
-      ensures counted_wq: w->wq->stats.merged ==
-          (\old(w->wq->stats.merged) < 0xFFFFFFFF ? \old(w->wq->stats.merged) + 1 : 0xFFFFFFFF);
+                       MtWqInc32(\old(w->wq->slot[w->slot].stats.merged));
+      ensures counted_wq: w->wq->stats.merged == MtWqInc32(\old(w->wq->stats.merged));
     complete behaviors;
     disjoint behaviors;
 */
@@ -345,8 +283,8 @@ mt_status_t mt_work_schedule_i(mt_work_t *w);
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
     ensures queued: MtWqQueued(w->wq, w->slot);
-    ensures status: \result == MT_OK || \result == MT_W_WQ_MERGED;
-    ensures merged: \result == MT_W_WQ_MERGED <==> \old(MtWqQueued(w->wq, w->slot));
+    ensures status: MtWqScheduleStatus(\result);
+    ensures merged: MtWorkMerged{Pre, Post}(w, \result);
 */
 mt_status_t mt_work_schedule(mt_work_t *w);
 
@@ -359,8 +297,8 @@ mt_status_t mt_work_schedule(mt_work_t *w);
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
     ensures queued: MtWqQueued(w->wq, w->slot);
-    ensures status: \result == MT_OK || \result == MT_W_WQ_MERGED;
-    ensures merged: \result == MT_W_WQ_MERGED <==> \old(MtWqQueued(w->wq, w->slot));
+    ensures status: MtWqScheduleStatus(\result);
+    ensures merged: MtWorkMerged{Pre, Post}(w, \result);
 */
 mt_status_t mt_work_schedule_isr(mt_work_t *w);
 
@@ -386,9 +324,8 @@ void mt_work_notify_i(void *item);
     requires item: MtWorkAttached(w);
     assigns w->wq->slot[w->slot].timer, w->wq->slot[w->slot].deadline_us, MtPortNow;
     ensures item: MtWorkAttached(w);
-    ensures armed: w->wq->slot[w->slot].timer == MT_WQ_TIMER_ONCE;
-    ensures deadline: w->wq->slot[w->slot].deadline_us ==
-        (MtPortNow + delay_us <= 0xFFFFFFFFFFFFFFFF ? MtPortNow + delay_us : 0xFFFFFFFFFFFFFFFF);
+    ensures armed: MtWorkTimer(w, MT_WQ_TIMER_ONCE);
+    ensures deadline: w->wq->slot[w->slot].deadline_us == MtWqAfter(MtPortNow, delay_us);
     ensures time: MtPortNow >= \old(MtPortNow);
 */
 void mt_work_schedule_delayed_i(mt_work_t *w, uint32_t delay_us);
@@ -399,7 +336,7 @@ void mt_work_schedule_delayed_i(mt_work_t *w, uint32_t delay_us);
     assigns w->wq->slot[w->slot].timer, w->wq->slot[w->slot].deadline_us, MtPortNow, MtLocked;
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
-    ensures armed: w->wq->slot[w->slot].timer == MT_WQ_TIMER_ONCE;
+    ensures armed: MtWorkTimer(w, MT_WQ_TIMER_ONCE);
 */
 void mt_work_schedule_delayed(mt_work_t *w, uint32_t delay_us);
 
@@ -415,16 +352,12 @@ void mt_work_schedule_delayed(mt_work_t *w, uint32_t delay_us);
     behavior invalid:
       assumes period_us == 0;
       ensures status: \result == MT_E_INVALID;
-      ensures unchanged: w->wq->slot[w->slot].timer == \old(w->wq->slot[w->slot].timer) &&
-                         w->wq->slot[w->slot].deadline_us == \old(w->wq->slot[w->slot].deadline_us) &&
-                         w->wq->slot[w->slot].period_us == \old(w->wq->slot[w->slot].period_us);
+      ensures unchanged: MtWorkTimerKept{Pre, Post}(w);
     behavior ok:
       assumes period_us >= 1;
       ensures status: \result == MT_OK;
-      ensures armed: w->wq->slot[w->slot].timer == MT_WQ_TIMER_EVERY &&
-                     w->wq->slot[w->slot].period_us == period_us;
-      ensures deadline: w->wq->slot[w->slot].deadline_us ==
-          (MtPortNow + delay_us <= 0xFFFFFFFFFFFFFFFF ? MtPortNow + delay_us : 0xFFFFFFFFFFFFFFFF);
+      ensures armed: MtWorkTimer(w, MT_WQ_TIMER_EVERY) && w->wq->slot[w->slot].period_us == period_us;
+      ensures deadline: w->wq->slot[w->slot].deadline_us == MtWqAfter(MtPortNow, delay_us);
     complete behaviors;
     disjoint behaviors;
 */
@@ -449,7 +382,7 @@ mt_status_t mt_work_schedule_interval(mt_work_t *w, uint32_t period_us, uint32_t
     requires item: MtWorkAttached(w);
     assigns w->wq->slot[w->slot].timer;
     ensures item: MtWorkAttached(w);
-    ensures off: w->wq->slot[w->slot].timer == MT_WQ_TIMER_OFF;
+    ensures off: MtWorkTimer(w, MT_WQ_TIMER_OFF);
     behavior stopped:
       assumes w->wq->slot[w->slot].timer != MT_WQ_TIMER_OFF;
       ensures status: \result == MT_OK;
@@ -467,7 +400,7 @@ mt_status_t mt_work_cancel_i(mt_work_t *w);
     assigns w->wq->slot[w->slot].timer, MtLocked;
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
-    ensures off: w->wq->slot[w->slot].timer == MT_WQ_TIMER_OFF;
+    ensures off: MtWorkTimer(w, MT_WQ_TIMER_OFF);
     ensures status: \result == MT_OK || \result == MT_E_STATE;
 */
 mt_status_t mt_work_cancel(mt_work_t *w);
@@ -487,19 +420,11 @@ mt_status_t mt_work_cancel(mt_work_t *w);
             q->stats.merged, q->stats.missed, q->wake, MtPortNow;
     ensures inv: MtWqInv(q);
     ensures bounded: \result <= q->nitems;
-    ensures due_queued: \forall integer s; 0 <= s < q->nitems ==>
-        \old(q->slot[s].timer) != MT_WQ_TIMER_OFF ==> \old(q->slot[s].deadline_us) <= now ==>
-        MtWqQueued(q, s);
-    ensures queued_kept: \forall integer s; 0 <= s < MT_CFG_WQ_MAX_ITEMS ==>
-        \old(MtWqQueued(q, s)) ==> MtWqQueued(q, s);
-    ensures not_due: \forall integer s; 0 <= s < q->nitems ==>
-        (\old(q->slot[s].timer) == MT_WQ_TIMER_OFF || \old(q->slot[s].deadline_us) > now) ==>
-        q->slot[s].timer == \old(q->slot[s].timer) && q->slot[s].deadline_us == \old(q->slot[s].deadline_us);
-    ensures once_stops: \forall integer s; 0 <= s < q->nitems ==>
-        \old(q->slot[s].timer) == MT_WQ_TIMER_ONCE ==> \old(q->slot[s].deadline_us) <= now ==>
-        q->slot[s].timer == MT_WQ_TIMER_OFF;
-    ensures every_ahead: \forall integer s; 0 <= s < q->nitems ==>
-        q->slot[s].timer == MT_WQ_TIMER_EVERY ==> q->slot[s].deadline_us > now;
+    ensures due_queued: MtWqTickDueQueued{Pre, Post}(q, now);
+    ensures queued_kept: MtWqQueuedKept{Pre, Post}(q);
+    ensures not_due: MtWqTickNotDue{Pre, Post}(q, now);
+    ensures once_stops: MtWqTickOnceStops{Pre, Post}(q, now);
+    ensures every_ahead: MtWqEveryAhead(q, now);
 */
 uint32_t mt_wq_timer_tick_i(mt_wq_t *q, uint64_t now);
 
@@ -538,7 +463,7 @@ void mt_wq_timer_proc(void *arg);
     behavior busy:
       assumes q->running != MT_WQ_NONE;
       ensures status: \result == MT_E_BUSY;
-      ensures counted: q->refused == (\old(q->refused) < 0xFFFFFFFF ? \old(q->refused) + 1 : 0xFFFFFFFF);
+      ensures counted: q->refused == MtWqInc32(\old(q->refused));
       ensures still: q->running == \old(q->running) && q->count == \old(q->count);
     behavior empty:
       assumes q->running == MT_WQ_NONE && q->count == 0;
@@ -550,13 +475,10 @@ void mt_wq_timer_proc(void *arg);
       ensures status: \result == MT_OK;
       ensures idle: q->running == MT_WQ_NONE;
       ensures ran: q->slot[\old(q->order[q->head])].stats.runs ==
-          (\old(q->slot[q->order[q->head]].stats.runs) < 0xFFFFFFFFFFFFFFFF ?
-           \old(q->slot[q->order[q->head]].stats.runs) + 1 : 0xFFFFFFFFFFFFFFFF);
+                   MtWqInc64(\old(q->slot[q->order[q->head]].stats.runs));
       ensures started: q->slot[\old(q->order[q->head])].stats.starts ==
-          (\old(q->slot[q->order[q->head]].stats.starts) < 0xFFFFFFFFFFFFFFFF ?
-           \old(q->slot[q->order[q->head]].stats.starts) + 1 : 0xFFFFFFFFFFFFFFFF);
-      ensures ran_wq: q->stats.runs ==
-          (\old(q->stats.runs) < 0xFFFFFFFFFFFFFFFF ? \old(q->stats.runs) + 1 : 0xFFFFFFFFFFFFFFFF);
+                       MtWqInc64(\old(q->slot[q->order[q->head]].stats.starts));
+      ensures ran_wq: q->stats.runs == MtWqInc64(\old(q->stats.runs));
     complete behaviors;
     disjoint behaviors;
 */
@@ -631,8 +553,7 @@ void mt_wq_request_stop(mt_wq_t *q);
     behavior busy:
       assumes w->wq->slot[w->slot].shot != MT_WQ_SHOT_NONE;
       ensures status: \result == MT_E_BUSY;
-      ensures unchanged: w->wq->slot[w->slot].shot == \old(w->wq->slot[w->slot].shot) &&
-                         w->wq->count == \old(w->wq->count);
+      ensures unchanged: MtWorkShotKept{Pre, Post}(w);
     behavior wait:
       assumes w->wq->slot[w->slot].shot == MT_WQ_SHOT_NONE;
       ensures status: \result == MT_OK || \result == MT_E_TIMEOUT;
@@ -649,13 +570,10 @@ mt_status_t mt_work_run_wait(mt_work_t *w, uint64_t timeout_us);
     requires out: \valid(r) && \separated(r, w, w->wq);
     assigns *r, MtLocked;
     ensures released: MtLocked == 0;
-    ensures runs: r->runs == w->wq->slot[w->slot].stats.runs &&
-                  r->starts == w->wq->slot[w->slot].stats.starts;
-    ensures counts: r->merged == w->wq->slot[w->slot].stats.merged &&
-                    r->missed == w->wq->slot[w->slot].stats.missed;
+    ensures runs: MtWorkReportRuns(r, &w->wq->slot[w->slot].stats);
+    ensures counts: MtWorkReportCounts(r, &w->wq->slot[w->slot].stats);
     ensures mean_guarded: w->wq->slot[w->slot].stats.runs == 0 ==> r->mean_run_us == 0;
-    ensures interval_guarded: w->wq->slot[w->slot].stats.starts < 2 ==>
-        r->mean_interval_us == 0 && r->rate_mhz == 0;
+    ensures interval_guarded: MtWorkReportIntervalGuarded(r, &w->wq->slot[w->slot].stats);
     ensures queued: (r->queued == 0 || r->queued == 1) && (r->queued == 1 <==> MtWqQueued(w->wq, w->slot));
     ensures running: r->running == (w->wq->running == w->slot ? 1 : 0);
 */
@@ -668,8 +586,7 @@ void mt_work_report(const mt_work_t *w, mt_work_report_t *r);
     assigns *r, MtLocked;
     ensures released: MtLocked == 0;
     ensures runs: r->runs == q->stats.runs && r->starts == q->stats.starts;
-    ensures counts: r->merged == q->stats.merged && r->missed == q->stats.missed &&
-                    r->refused == q->refused;
+    ensures counts: MtWqReportCounts(r, q);
     ensures sizes: r->items == q->nitems && r->depth == q->count && r->max_depth == q->max_depth;
     ensures mean_guarded: q->stats.runs == 0 ==> r->mean_run_us == 0;
     ensures interval_guarded: q->stats.starts < 2 ==> r->mean_interval_us == 0;
