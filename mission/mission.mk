@@ -45,7 +45,9 @@ mission-tool: $(BUILD)/mt-mission
 # built with MISSION_KERNEL_MAX_CMDS (config.h's default; --kernel-max N for another one).
 MISSION_TOOL_MAX_CMDS := 32766u
 MISSION_KERNEL_MAX_CMDS ?= 700u
-MISSION_TOOL_KERNEL_SRC := kernel/src/mission.c kernel/src/mission_invoke.c kernel/src/status.c
+# The mission module's files (mission.c, mission_check.c, mission_seq.c, mission_invoke.c).
+MISSION_KERNEL_SRC := $(sort $(wildcard kernel/src/mission*.c))
+MISSION_TOOL_KERNEL_SRC := $(MISSION_KERNEL_SRC) kernel/src/status.c
 $(BUILD)/mt-mission: tools/mission/main.c $(MISSION_HOST_SRC) $(wildcard mission/*.h) $(MISSION_TOOL_KERNEL_SRC) \
                      $(wildcard kernel/include/mt/*.h kernel/src/*.h)
 	@mkdir -p $(@D)
@@ -161,12 +163,12 @@ test-mission-deep: $(MISSION_DIFF_DRIVER)
 FUZZ_SECONDS ?= 10
 FUZZ_FLAGS := -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
 FUZZ_TARGETS := fuzz_wpl fuzz_sequencer fuzz_roundtrip fuzz_plan
-$(BUILD)/fuzz/%: fuzz/mission/%.c $(MISSION_HOST_SRC) $(wildcard mission/*.h) kernel/src/mission.c \
-                 kernel/src/mission_invoke.c kernel/src/status.c $(wildcard kernel/include/mt/*.h) \
+$(BUILD)/fuzz/%: fuzz/mission/%.c $(MISSION_HOST_SRC) $(wildcard mission/*.h) $(MISSION_KERNEL_SRC) \
+                 kernel/src/status.c $(wildcard kernel/include/mt/*.h) \
                  $(wildcard kernel/src/*.h)
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) $(KERNEL_INC) -Ikernel/src -Imission $< $(MISSION_HOST_SRC) \
-	    kernel/src/mission.c kernel/src/mission_invoke.c kernel/src/status.c $(MISSION_LIBS) -lm -o $@
+	    $(MISSION_KERNEL_SRC) kernel/src/status.c $(MISSION_LIBS) -lm -o $@
 fuzz: deps-test
 	@$(MAKE) --no-print-directory $(addprefix $(BUILD)/fuzz/,$(FUZZ_TARGETS))
 	@set -e; for t in $(FUZZ_TARGETS); do \

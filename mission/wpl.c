@@ -409,7 +409,7 @@ int mt_wpl_frame_ignored(uint32_t command)
     return (row != NULL && row->location != 0u) ? 0 : 1;
 }
 
-/* Frames the kernel accepts for some command (mission.c frame_ok). */
+/* Frames the kernel accepts for some command (mission_check.c frame_ok). */
 static int frame_known(uint32_t frame)
 {
     return frame == 0u || frame == 2u || frame == 3u || frame == 5u || frame == 6u || frame == 10u ||

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 """Executable reference of ArduPilot's mission sequencer (AP_Mission), for the differential
-test of Metronome's kernel/src/mission.c (tests/mission_diff/run_diff.py).
+test of Metronome's kernel/src/mission*.c (tests/mission_diff/run_diff.py).
 
 Written from a reading of libraries/AP_Mission/AP_Mission.cpp (upstream master as of
 2025-07, commit 90700977c553, the baseline of /work/shared/reference/ardupilot.md §1.5 and

@@ -14,8 +14,9 @@ follows ArduPilot's AP_Mission::is_nav_cmd; the parameter rules (F_NAN3 ... F_IN
 Metronome's reading of ArduPilot's sanity checks and conversions (PARAM_RULES).
 
 Outputs (committed: the kernel builds and is proved without Python):
-    kernel/src/mt_mission_cmds.h   MT_MISSION_CMD_ROWS (the {id, kind, flags} rows of mission.c's
-                                   k_cmds), N_CMDS and the F_* flags, private to mission.c
+    kernel/src/mt_mission_cmds.h   MT_MISSION_CMD_ROWS (the {id, kind, flags} rows of
+                                   mission_check.c's k_cmds), N_CMDS and the F_* flags, private
+                                   to mission_check.c
     mission/mav_cmd_names.h        id -> MAVLink name (no MAV_CMD_ prefix) and location flag,
                                    private to mission/wpl.c
 Standard library only; the XML is parsed with xml.etree.
@@ -128,7 +129,7 @@ NAV_EXCEPTIONS = ["NAV_SET_YAW_SPEED", "NAV_SCRIPT_TIME", "NAV_ATTITUDE_TIME"]
 JUMP = ["DO_JUMP", "DO_JUMP_TAG"]
 TAG = ["JUMP_TAG"]
 
-# Parameter rules, not in the XML (mission.c params_ok): NAN3/NAN4 param 3/4 may be NaN
+# Parameter rules, not in the XML (mission_check.c params_ok): NAN3/NAN4 param 3/4 may be NaN
 # (AP_Mission::sanity_check_params: NaN is refused elsewhere); NN1/NN2 param 1/2 >= 0 and
 # INT1/INT2 param 1/2 an integer (ArduPilot stores them in unsigned or integer fields).
 # Carried over from the hand-written table this generator replaced; a command not listed has
@@ -145,7 +146,7 @@ PARAM_RULES = {
     "NAV_VTOL_LAND": ["NAN3", "NAN4"],
     "CONDITION_DELAY": ["NN1"],
     "CONDITION_DISTANCE": ["NN1"],
-    "CONDITION_YAW": ["NN2"],  # turn rate; angle, direction, relative: mission.c special_ok
+    "CONDITION_YAW": ["NN2"],  # turn rate; angle, direction, relative: mission_check.c special_ok
     "DO_CHANGE_SPEED": ["INT1"],  # speed type (uint8)
     "DO_SET_RELAY": ["NN1", "INT1"],  # relay number (uint8)
     "DO_REPEAT_RELAY": ["NN1", "NN2", "INT1", "INT2"],  # relay, count
@@ -322,7 +323,7 @@ def class_comment(name, kind):
 
 def render_kernel(rows, nav_last):
     out = banner("mt_mission_cmds.h",
-                 "The mission command table's rows, private to mission.c: id, class, checks.")
+                 "The mission command table's rows, private to mission_check.c: id, class, checks.")
     out += [
         "#ifndef MT_MISSION_CMDS_H",
         "#define MT_MISSION_CMDS_H",
@@ -330,7 +331,7 @@ def render_kernel(rows, nav_last):
         "#include \"mt/mission.h\"",
         "",
         "/* Command table flags: F_LOC is the XML's hasLocation, the others ArduPilot's parameter",
-        " * rules (mission.c params_ok). */",
+        " * rules (mission_check.c params_ok). */",
     ]
     out += align_comments([(f"#define F_{f} 0x{bit:02x}u", f"/* {FLAG_DOC[f]} */")
                            for f, bit in FLAG_BITS])
@@ -338,11 +339,11 @@ def render_kernel(rows, nav_last):
         "",
         f"#define N_CMDS {len(rows)}u",
         "",
-        "/* The rows of mission.c's `static const cmd_info_t k_cmds[N_CMDS]`, {id, kind, flags},",
-        f" * sorted by id. Class: nav when id <= {nav_last} (MAV_CMD_NAV_LAST) or one of",
+        "/* The rows of mission_check.c's `static const cmd_info_t k_cmds[N_CMDS]`,",
+        f" * {{id, kind, flags}}, sorted by id. Class: nav when id <= {nav_last} (MAV_CMD_NAV_LAST) or one of",
         f" * AP_Mission::is_nav_cmd's exceptions ({', '.join(NAV_EXCEPTIONS)});",
         " * the conditions (CONDITION_*) are do commands. A macro, not the array itself, so that",
-        " * the array stays a definition of mission.c alone. */",
+        " * the array stays a definition of mission_check.c alone. */",
         "/* clang-format off */",
     ]
     cells = []

@@ -105,6 +105,8 @@ def build(out):
                          "-DMT_CFG_MISSION_ADVANCE_EXTRA=%du" % MISSION_ADVANCE_EXTRA]
                    + KINC + [os.path.join(HERE, "mission_trace.c"),
                              os.path.join(KSRC, "mission.c"),
+                             os.path.join(KSRC, "mission_check.c"),
+                             os.path.join(KSRC, "mission_seq.c"),
                              os.path.join(KSRC, "mission_invoke.c"), "-o", mission], check=True)
     return ring, sem, mission
 

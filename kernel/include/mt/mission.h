@@ -108,7 +108,7 @@
 extern "C" {
 #endif
 
-/** MAVLink MAV_CMD numbers the module knows (the full list is mission.c's table). */
+/** MAVLink MAV_CMD numbers the module knows (the full list is mission_check.c's table). */
 #define MT_MAV_CMD_WAYPOINT 16u
 #define MT_MAV_CMD_LOITER_UNLIM 17u
 #define MT_MAV_CMD_LOITER_TURNS 18u
