@@ -35,15 +35,15 @@ CHECK_CBMC_bus     := mt_topic_ mt_sub_
 CHECK_CBMC_wq      := mt_wq_ mt_work_
 CHECK_CBMC_mission := mt_mission_
 
-# SpscRing models both rings (its configurations name the byte or the object ring).
-CHECK_TLA_ring     := SpscRing
-CHECK_TLA_objring  := SpscRing
-CHECK_TLA_sem      := BinSem
-CHECK_TLA_proc     := ProcReg
-CHECK_TLA_sched    := TickSched
-CHECK_TLA_bus      := TopicBus
-CHECK_TLA_wq       := WorkQueueMC
-CHECK_TLA_mission  := MissionSeqMC
+# Ring models both rings (its configurations name the byte or the object ring).
+CHECK_TLA_ring     := Ring
+CHECK_TLA_objring  := Ring
+CHECK_TLA_sem      := Sem
+CHECK_TLA_proc     := Proc
+CHECK_TLA_sched    := Sched
+CHECK_TLA_bus      := Bus
+CHECK_TLA_wq       := WqMC
+CHECK_TLA_mission  := MissionMC
 
 # The ring traces run both rings.
 CHECK_TRACE_ring    := ring

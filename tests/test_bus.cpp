@@ -389,7 +389,7 @@ TEST(Bus, GenerationWrapsAndDistancesStayExact)
 // The give-up path of the lock-free copy: a slot whose stamp does not match the
 // generation the subscriber wants (as while a publisher overwrites it) is never
 // returned; after MT_CFG_BUS_COPY_TRIES attempts the copy reports MT_E_BUS_TORN,
-// counts it and consumes nothing. (The race itself: Stress test, tla/TopicBus.tla.)
+// counts it and consumes nothing. (The race itself: Stress test, tla/Bus.tla.)
 TEST(Bus, StampMismatchGivesUpWithTornAndConsumesNothing)
 {
     Topic tp;

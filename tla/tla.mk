@@ -7,7 +7,7 @@
 #   make tla-update  re-measure the CI configurations and rewrite the pinned counts
 #   make tla-trace   trace validation: the real ring.c / objring.c under random interleavings
 #                    (tools/trace/ring_trace), sem.c on the POSIX port (sem_trace) and
-#                    mission.c under random operations and callback outcomes
+#                    mission*.c under random operations and callback outcomes
 #                    (mission_trace), each trace checked against its model by TLC
 #   make tla-trace-mission
 #                    the mission part of tla-trace only (about 30 s; a part of `make prove`)

@@ -300,7 +300,7 @@ def other_totals_md(summary):
         md.append(f"- TLC: {t['passed']}/{t['models']} model configurations as expected")
     t = summary["tla_trace"]
     if t:
-        md.append(f"- Trace validation (mission.c against MissionSeq): {t['passed']}/{t['traces']} "
+        md.append(f"- Trace validation (mission*.c against Mission): {t['passed']}/{t['traces']} "
                   "traces accepted and controls rejected as expected")
     t = summary["tla_trace_all"]
     if t:

@@ -11,7 +11,7 @@
 #              make cbmc-test  the translator's tests
 #              make chibios-cbmc  CBMC on the ChibiOS port's time arithmetic
 #              make tla    TLC on every CI configuration of tla/models.json
-#              make tla-trace-mission  trace validation of mission.c against MissionSeq
+#              make tla-trace-mission  trace validation of mission*.c against Mission
 #      PROVE_EXTRA="part ..." appends parts (CI: the ring and semaphore traces and the rotating
 #      share of the mutants, which run in lane 1 after WP); PROVE_PARTS="part ..." replaces the
 #      default list;

@@ -60,9 +60,9 @@ def passing_set():
             "properties_replayed": 0, "coverage_fresh": 0, "coverage_replayed": 3,
             "tier": "default", "seconds": 6.0, "missing_proofs": [],
             "results": [harness(n) for n in names]}
-    tla = {"models": [dict(expected("SpscRing_ci"), module="SpscRing", config="cfg/ring.cfg",
+    tla = {"models": [dict(expected("Ring_ci"), module="Ring", config="cfg/ring.cfg",
                            distinct_states=1234),
-                      expected("SpscRing_lost_item", "invariant")],
+                      expected("Ring_lost_item", "invariant")],
            "passed": 2, "total": 2, "seconds": 2.0}
     return {
         "parts.json": {p: {"rc": 0, "seconds": 1.5} for p in DEFAULT_PARTS},
@@ -420,7 +420,7 @@ def test_tlc_model_unexpected_fails(proof):
         t["models"][1].update(ok=False, result="pass")
         t["passed"] = 1
     proof.edit("tla/summary.json", change)
-    assert_fails(proof.run(), "TLC model SpscRing_lost_item", "expected invariant, got pass")
+    assert_fails(proof.run(), "TLC model Ring_lost_item", "expected invariant, got pass")
 
 
 def test_mission_trace_unexpected_fails(proof):

@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""Trace validation of tla/SpscRing.tla, tla/BinSem.tla and tla/MissionSeq.tla against the C code.
+"""Trace validation of tla/Ring.tla, tla/Sem.tla and tla/Mission.tla against the C code.
 
 Builds tools/trace/ring_trace against kernel/src/ring.c and objring.c (with
 the tracing mt_atomic.h of tools/trace/shim) and tools/trace/sem_trace against
 kernel/src/sem.c and hal_posix/port.c (port calls intercepted with --wrap),
 runs them for several configurations and seeds, and checks each trace with
-TLC through tla/SpscRingTrace.tla or tla/BinSemTrace.tla: the trace is
+TLC through tla/RingTrace.tla or tla/SemTrace.tla: the trace is
 accepted iff TLC reports the invariant
 TraceNotAccepted violated (a state with the whole log consumed is reachable);
 it is rejected when TLC reports a deadlock (a state from which no model step
@@ -14,12 +14,12 @@ matches the next event; the accepted end state stutters). As a control, one
 mutated copy per configuration (one logged index value changed) must be
 rejected.
 
-tools/trace/mission_trace runs kernel/src/mission.c on fixed missions with
-seeded random operations and callback outcomes; tla/MissionSeqTrace.tla
+tools/trace/mission_trace runs kernel/src/mission*.c on fixed missions with
+seeded random operations and callback outcomes; tla/MissionTrace.tla
 replays each log (callbacks in order with index and outcome, cursor state
 after each call). Two controls per mission must be rejected at the changed
 event: one logged nav_idx changed ("mutated") and one callback outcome that
-mission.c acts on flipped ("flipped": a verify, or the start of a nav
+the kernel acts on flipped ("flipped": a verify, or the start of a nav
 command; a do command's start result is ignored).
 
     tools/trace/run_traces.py [--jar JAR] [--out DIR] [--seeds N] [--only ring sem mission]
@@ -58,7 +58,7 @@ MISSION_CASES = [
     ("mission_do_runs", "do_runs", 200),
 ]
 MISSION_SEEDS = 2
-# MT_CFG_MISSION_ADVANCE_EXTRA of the traced mission.c, and the model's Extra: 2, as in the
+# MT_CFG_MISSION_ADVANCE_EXTRA of the traced mission*.c, and the model's Extra: 2, as in the
 # CBMC harnesses and the TLC configurations. The default 255 is the same code with a larger
 # loop bound, which only a walk with more refused nav starts than the traces have reaches;
 # the model's walk then costs TLC about 10 times more (forever: 30 s a trace instead of 3 s).
@@ -144,7 +144,7 @@ def write_mission_cfg(path):
 def mutate_mission(data_path, variant):
     """Mission: "mutated" changes the nav_idx of the middle state-carrying event
     (to the next value in 0..TN-1, 0 standing for MT_MISSION_NONE); "flipped"
-    flips the outcome of the middle callback whose outcome mission.c acts on (a
+    flips the outcome of the middle callback whose outcome the kernel acts on (a
     verify, or the start of a nav command). Returns the index of the changed
     event (0: none)."""
     with open(data_path) as f:
@@ -240,20 +240,20 @@ def main():
         if job is SEM_CASE:
             name, waits, signals = job
             kind, cap, max_msg, max_len, drop, slots = "sem", None, None, None, 0, None
-            spec, datamod = "BinSemTrace", "BinSemTraceData.tla"
-            modules = ("BinSem.tla", "BinSemTrace.tla")
+            spec, datamod = "SemTrace", "SemTraceData.tla"
+            modules = ("Sem.tla", "SemTrace.tla")
         elif job in MISSION_CASES:
             name, mission, ops = job
             kind, cap, max_msg, max_len, drop, slots = "mission", None, None, None, 0, None
-            spec, datamod = "MissionSeqTrace", "MissionSeqTraceData.tla"
-            modules = ("MissionSeq.tla", "MissionSeqTrace.tla")
+            spec, datamod = "MissionTrace", "MissionTraceData.tla"
+            modules = ("Mission.tla", "MissionTrace.tla")
             seeds = min(args.seeds, MISSION_SEEDS)
             controls = [("mutated", "rejected"), ("flipped", "rejected")]
         else:
             name, kind, cap, max_msg, max_len, drop = job
             slots = cap if kind == "byte" else cap + 1
-            spec, datamod = "SpscRingTrace", "SpscRingTraceData.tla"
-            modules = ("SpscRing.tla", "SpscRingTrace.tla")
+            spec, datamod = "RingTrace", "RingTraceData.tla"
+            modules = ("Ring.tla", "RingTrace.tla")
         for seed in range(1, seeds + 1):
             runs = [("trace", "accepted")]
             if seed == 1:

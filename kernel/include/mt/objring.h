@@ -124,8 +124,8 @@ mt_status_t mt_oring_push(mt_oring_t *r, const void *obj);
  *  @retval MT_W_DROPPED_OLDEST  the ring was full when the push looked: stored in
  *                               the spare slot, and the consumer discards the oldest
  *                               object unless it consumed it meanwhile (a concurrent
- *                               pop can make the drop unnecessary; tla/SpscRing.tla,
- *                               config SpscRing_drop_report). The status is therefore
+ *                               pop can make the drop unnecessary; tla/Ring.tla,
+ *                               config Ring_drop_report). The status is therefore
  *                               an upper bound; `lost` counts the actual drops.
  *  @retval MT_E_FULL            the consumer has not caught up since the last
  *                               drop; nothing written (counted in rejected). */

@@ -12,7 +12,7 @@
  * - Data is written before the producer publishes tail (release store) and
  *   read after the consumer loads tail (acquire load); symmetrically the
  *   consumer finishes reading before it publishes head, so freed space is
- *   reused only after the reader is done. The TLA+ model tla/SpscRing.tla
+ *   reused only after the reader is done. The TLA+ model tla/Ring.tla
  *   checks this ordering at the granularity of single memory operations.
  * - Each side keeps a cached copy of the other side's index and reloads it
  *   only when the cached view says full (producer) or empty (consumer).

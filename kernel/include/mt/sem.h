@@ -14,7 +14,7 @@
  * - Function classes: no suffix = task context (takes the kernel lock);
  *   `_s`/`_i` = kernel lock held by the caller; `_isr` = interrupt handler.
  * - The contracts below are sequential; the interleavings of waiters, task
- *   signals and ISR signals are checked by tla/BinSem.tla.
+ *   signals and ISR signals are checked by tla/Sem.tla.
  */
 #ifndef MT_SEM_H
 #define MT_SEM_H

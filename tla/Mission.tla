@@ -1,6 +1,6 @@
----------------------------- MODULE MissionSeq ----------------------------
+----------------------------- MODULE Mission ------------------------------
 (***************************************************************************)
-(* Mission-command sequencing (kernel/src/mission.c, mt/mission.h), with  *)
+(* Mission-command sequencing (kernel/src/mission*.c, mt/mission.h), with *)
 (* ArduPilot AP_Mission's rules.                                           *)
 (*                                                                         *)
 (* One fixed mission per configuration: Kind, Tgt, Rep over indices        *)
@@ -44,7 +44,7 @@
 (* are stated over cbs and adv with a walk of their own (Order), not with *)
 (* the actions.                                                            *)
 (*                                                                         *)
-(* VARIANT "ap" is mission.c. The two broken variants bring back the old  *)
+(* VARIANT "ap" is mission*.c. The two broken variants bring back the old *)
 (* rules (mission.c before the AP rewrite), each a must-fail control:      *)
 (*   "do_after_nav": the advance starts no do command; the do search,      *)
 (*     which runs once per update after the nav half, starts the do        *)

@@ -1,15 +1,15 @@
---------------------------- MODULE MissionSeqTrace ---------------------------
+---------------------------- MODULE MissionTrace -----------------------------
 (***************************************************************************)
-(* Trace validation of MissionSeq against the C code. tools/trace/        *)
-(* mission_trace runs the real mission.c on a fixed mission with seeded    *)
+(* Trace validation of Mission against the C code. tools/trace/           *)
+(* mission_trace runs the real mission*.c on a fixed mission with seeded   *)
 (* random operations and callback outcomes, and logs each call: the        *)
 (* callbacks it made (kind, index, outcome, in order) and the state it     *)
-(* left (MissionSeqTraceData.tla). Per event, the model must take a step   *)
+(* left (MissionTraceData.tla). Per event, the model must take a step      *)
 (* of the action of that call (its own nondeterminism: every outcome of    *)
 (* every callback) such that                                               *)
 (*   - the callbacks of the step (cbs') are the logged ones, in the same   *)
 (*     order, with the same indices and outcomes (but a do command's start *)
-(*     result, which mission.c ignores);                                   *)
+(*     result, which mission_seq.c ignores);                               *)
 (*   - the state after the event is the logged one (st, nav, navIdx, dcmd, *)
 (*     doIdx, ddone, prevNav, the jump counters);                          *)
 (*   - a refused call (rc # OK) comes only where the C guard refuses it,   *)
@@ -19,7 +19,7 @@
 (* The trace is accepted iff TLC reports TraceNotAccepted VIOLATED         *)
 (* (the whole log matched), rejected iff it reports a deadlock.            *)
 (***************************************************************************)
-EXTENDS MissionSeq, MissionSeqTraceData, Sequences
+EXTENDS Mission, MissionTraceData, Sequences
 
 VARIABLE ti     \* index of the next log event
 

@@ -1,7 +1,7 @@
----------------------------- MODULE WorkQueueMC ----------------------------
-(* Item tables of the WorkQueue configurations (tla/cfg/WorkQueue_*.cfg
+------------------------------- MODULE WqMC --------------------------------
+(* Item tables of the Wq configurations (tla/cfg/Wq_*.cfg
    substitute Period and Cost with one of them). Items are 1..NItems. *)
-EXTENDS WorkQueue
+EXTENDS Wq
 
 \* No timers, runs without time (the race configurations).
 Untimed2 == <<0, 0>>

@@ -1,8 +1,8 @@
----------------------------- MODULE MissionSeqMC ----------------------------
-(* The fixed missions the MissionSeq configurations check (tla/cfg/MissionSeq_*.cfg
+----------------------------- MODULE MissionMC ------------------------------
+(* The fixed missions the Mission configurations check (tla/cfg/Mission_*.cfg
    substitute N, Kind, Tgt, Rep with one of them). Index 0 is home, N the end;
    Rep -1 is a repeat-forever jump, a "tag" is a JUMP_TAG marker. *)
-EXTENDS MissionSeq
+EXTENDS Mission
 
 \* nested: 1 nav, 2 do, 3 nav, 4 jump->1 x2, 5 tag, 6 do, 7 nav, 8 jump->3 x1, 9 nav
 NestedN == 10

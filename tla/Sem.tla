@@ -1,4 +1,4 @@
-------------------------------- MODULE BinSem -------------------------------
+-------------------------------- MODULE Sem ---------------------------------
 (***************************************************************************)
 (* Binary semaphore (kernel/src/sem.c) with the port contract of           *)
 (* kernel/port/mt_port.h (mt_port_suspend_s / mt_port_resume_i), as the     *)

@@ -1,4 +1,4 @@
------------------------------- MODULE SpscRing ------------------------------
+-------------------------------- MODULE Ring --------------------------------
 (***************************************************************************)
 (* SPSC byte ring (kernel/src/ring.c) and object ring (kernel/src/objring.c)*)
 (* at the granularity of single shared-memory operations, in the order the *)
@@ -509,7 +509,7 @@ Safety ==
 \* The claim of objring.h / status.h that each MT_W_DROPPED_OLDEST return
 \* means "the oldest unread object is discarded (and counted) by the
 \* consumer": the reports not yet matched by a discard are exactly the drop
-\* pending in the ring. It is FALSE (config SpscRing_drop_report): when the
+\* pending in the ring. It is FALSE (config Ring_drop_report): when the
 \* consumer has already copied the oldest object and not yet released it,
 \* the producer sees count == cap, stores into the spare slot and reports a
 \* drop; the consumer's release then brings the count back to cap and

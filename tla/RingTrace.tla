@@ -1,11 +1,11 @@
---------------------------- MODULE SpscRingTrace ---------------------------
+----------------------------- MODULE RingTrace -----------------------------
 (***************************************************************************)
-(* Trace validation of SpscRing against the C code. tools/trace/ring_trace *)
+(* Trace validation of Ring against the C code. tools/trace/ring_trace     *)
 (* runs the real ring.c / objring.c under a random interleaving of a       *)
 (* producer and a consumer, switching at every acquire load and release    *)
 (* store, and logs each API call, index access (with the value read or     *)
 (* written), return (with the items read) and, at the end, the ring's      *)
-(* fields and slots. This module constrains SpscRing to follow that log:   *)
+(* fields and slots. This module constrains Ring to follow that log:       *)
 (* each event must be one step of the matching action with the logged      *)
 (* values; steps that touch no index (slot copies) may happen in between.  *)
 (* The trace is accepted iff a state with the whole log consumed is        *)
@@ -27,7 +27,7 @@
 (*                    are d (no step)                                      *)
 (*   end              every ring field and slot equals the model's         *)
 (***************************************************************************)
-EXTENDS SpscRing, SpscRingTraceData
+EXTENDS Ring, RingTraceData
 
 VARIABLE ti     \* index of the next log event
 

@@ -1,12 +1,12 @@
----------------------------- MODULE BinSemTrace ----------------------------
+----------------------------- MODULE SemTrace ------------------------------
 (***************************************************************************)
-(* Trace validation of BinSem against the C code. tools/trace/sem_trace    *)
+(* Trace validation of Sem against the C code. tools/trace/sem_trace       *)
 (* runs the real sem.c on the POSIX port with a waiting task, a signalling *)
 (* task and a simulated ISR (threads), and logs every call from sem.c into *)
 (* the port (lock, unlock with the semaphore's state, suspend_s and its    *)
 (* result, resume_i and its result) while the kernel lock is held, so the  *)
 (* log order is the order of the critical sections. This module constrains *)
-(* BinSem (one waiter) to follow the log. The trace is accepted iff TLC    *)
+(* Sem (one waiter) to follow the log. The trace is accepted iff TLC       *)
 (* reports TraceNotAccepted VIOLATED, rejected iff it reports a deadlock.  *)
 (*                                                                         *)
 (* Event -> action (steps the log does not show are allowed only where the *)
@@ -25,7 +25,7 @@
 (*                   lock free (no step) / mt_sem_signal_isr (resume_i     *)
 (*                   returned r) / state s (no step)                       *)
 (***************************************************************************)
-EXTENDS BinSem, BinSemTraceData, Sequences
+EXTENDS Sem, SemTraceData, Sequences
 
 VARIABLES ti,      \* index of the next log event
           lastSt   \* status the waiter's last wait decided (for its "ret" event)

@@ -1,4 +1,4 @@
------------------------------ MODULE TickSched -----------------------------
+------------------------------- MODULE Sched -------------------------------
 (***************************************************************************)
 (* Tick scheduler (kernel/src/sched.c): the main-loop thread, one          *)
 (* mt_sched_loop_once per tick, with nondeterministic sample latency and   *)

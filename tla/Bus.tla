@@ -1,9 +1,9 @@
------------------------------- MODULE TopicBus ------------------------------
+-------------------------------- MODULE Bus ---------------------------------
 (***************************************************************************)
-(* Topic bus (kernel/src/bus.c): publishers (task or ISR, serialised by    *)
-(* the kernel lock) racing one subscriber's lock-free copy, at the         *)
-(* granularity of single shared-memory operations, in the order the C      *)
-(* code performs them.                                                     *)
+(* Topic bus (kernel/src/bus.c, bus_sub.c): publishers (task or ISR,      *)
+(* serialised by the kernel lock) racing one subscriber's lock-free copy,  *)
+(* at the granularity of single shared-memory operations, in the order the *)
+(* C code performs them.                                                   *)
 (*                                                                         *)
 (* Actions and the C they abstract:                                        *)
 (*  Publisher (mt_topic_publish_i, lock held; one process stands for every *)
@@ -58,7 +58,7 @@
 (*    "it happened" matters to the properties.                             *)
 (*  - Notifiers, poll, intervals and statistics are not modelled: they run *)
 (*    under the kernel lock or in the subscriber's own thread (poll's      *)
-(*    semaphore is tla/BinSem.tla).                                        *)
+(*    semaphore is tla/Sem.tla).                                           *)
 (***************************************************************************)
 EXTENDS Naturals, FiniteSets
 
@@ -84,7 +84,7 @@ Slots == 0 .. Q - 1
 Bytes == 0 .. B - 1
 Gens == 0 .. GenMod - 1
 
-\* kernel/src/bus.c, literally (mt_spec_bus.h): the case splits, GenMod for 2^32
+\* kernel/src/bus.c and bus_sub.c, literally (mt_spec_bus.h): the case splits, GenMod for 2^32
 GenDist(a, b) == IF a >= b THEN a - b ELSE IF NaiveDist THEN 0 ELSE (a + GenMod) - b
 GenNext(g) == IF g < GenMod - 1 THEN g + 1 ELSE 0
 GenBack(g, d) == IF g >= d THEN g - d ELSE (g + GenMod) - d

@@ -1,4 +1,4 @@
------------------------------- MODULE ProcReg ------------------------------
+------------------------------- MODULE Proc --------------------------------
 (***************************************************************************)
 (* Proc registration (kernel/src/proc.c, mt_proc_register) by several       *)
 (* threads under the kernel lock, against the dispatcher (mt_proc_dispatch) *)
@@ -29,7 +29,7 @@
 (* Simplifications:                                                        *)
 (*  - Sequentially consistent interleaving; the release store of count and *)
 (*    the acquire load of count are what make this sound for the entry     *)
-(*    writes and reads (see SpscRing.tla).                                 *)
+(*    writes and reads (see Ring.tla).                                     *)
 (*  - Inside the register critical section only lock holders write the     *)
 (*    data the check reads, so n = count, is_registered and the full test   *)
 (*    are one step.                                                        *)
