@@ -153,6 +153,34 @@ def test_prove_sh_summary_not_written_by_its_part_is_stale(prove):
     assert "part cbmc: summary" in out and "stale" in out
 
 
+def test_prove_sh_drops_summaries_of_optional_parts_it_does_not_run(prove):
+    # an earlier make prove-selftest left a summary with a mutant not rejected; a make prove
+    # that runs no mutants neither reads it nor fails on it
+    path = os.path.join(prove.proof, "selftest", "summary.json")
+    with open(path, encoding="utf-8") as f:
+        st = json.load(f)
+    st["results"][1].update(ok=False, reason="CBMC time-out")
+    st["ok"] = 1
+    Proof.put_json(path, st)
+    Proof.put_json(os.path.join(prove.proof, "cbmc", "summary-max.json"), {"harnesses": 0})
+    rc, out = prove.run()
+    assert rc == 0, out
+    assert not os.path.exists(path)
+    assert not os.path.exists(os.path.join(prove.proof, "cbmc", "summary-max.json"))
+    assert os.path.exists(os.path.join(prove.proof, "hal_chibios", "cbmc-summary.json"))
+
+
+def test_prove_sh_keeps_the_summary_of_an_optional_part_it_runs(prove):
+    # the stub make writes no selftest summary: the one left is kept, and judged stale
+    path = os.path.join(prove.proof, "selftest", "summary.json")
+    old = time.time() - 3600
+    os.utime(path, (old, old))
+    rc, out = prove.run(PROVE_EXTRA="prove-selftest-ci")
+    assert rc == 1, out
+    assert os.path.exists(path)
+    assert "part prove-selftest-ci: summary" in out and "stale" in out
+
+
 def test_prove_sh_prove_parts_runs_only_those(prove):
     rc, out = prove.run(PROVE_PARTS="wp tla")
     assert rc == 0, out
