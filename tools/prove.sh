@@ -83,20 +83,15 @@ parts=("${lane1[@]}" "${lane2[@]}")
 # The summaries of the optional parts this run does not make go: the gate reads every summary
 # present, and one left by an earlier run (make prove-selftest, make prove-cold's tier) would
 # be judged as this run's result.
+optional=("prove-selftest selftest/summary.json" "prove-selftest-ci selftest/summary.json"
+          "cbmc-max cbmc/summary-max.json" "tla-trace tla/trace/summary.json"
+          "chibios-cbmc hal_chibios/cbmc-summary.json")
 keep=()
-for opt in "prove-selftest selftest/summary.json" "prove-selftest-ci selftest/summary.json" \
-           "cbmc-max cbmc/summary-max.json" "tla-trace tla/trace/summary.json" \
-           "chibios-cbmc hal_chibios/cbmc-summary.json"; do
-    case " ${parts[*]} " in
-        *" ${opt%% *} "*) keep+=("${opt#* }") ;;
-    esac
+for opt in "${optional[@]}"; do
+    case " ${parts[*]} " in *" ${opt%% *} "*) keep+=("${opt#* }") ;; esac
 done
-for opt in selftest/summary.json cbmc/summary-max.json tla/trace/summary.json \
-           hal_chibios/cbmc-summary.json; do
-    case " ${keep[*]:-} " in
-        *" $opt "*) ;;
-        *) rm -f "$OUT/$opt" ;;
-    esac
+for opt in "${optional[@]}"; do
+    case " ${keep[*]:-} " in *" ${opt#* } "*) ;; *) rm -f "$OUT/${opt#* }" ;; esac
 done
 
 # part_run PART: make PART; in a shard, parts wp and cbmc run this shard's units only.
