@@ -188,6 +188,16 @@ def test_prove_sh_prove_parts_runs_only_those(prove):
 
 
 # ------------------------------------------------------------------------------ run_cbmc.sh
+def test_prove_sh_lanes_follow_the_cbmc_record_mode(prove):
+    rc, out = prove.run()
+    assert rc == 0, out
+    assert "lane 1: wp; lane 2: cbmc cbmc-test chibios-cbmc tla tla-trace-mission" in out
+    # fresh property runs make lane 2 the long one: the mission traces move to lane 1
+    rc, out = prove.run(CBMC_RECORD="properties")
+    assert rc == 0, out
+    assert "lane 1: wp tla-trace-mission; lane 2: cbmc cbmc-test chibios-cbmc tla\n" in out
+
+
 
 class Chibios:
     """A copy of hal_chibios/proofs/run_cbmc.sh in a tree of its own, with stub cbmc."""
