@@ -109,10 +109,11 @@ void mt_port_unlock_isr(void);
     requires valid_ref: \valid(ref);
     requires no_waiter: *ref == \null;
     requires positive: timeout_us > 0;
-    assigns *ref, MtPortNow;
+    assigns *ref, MtPortNow, MtPortHandoffs;
     ensures held: MtLocked == 1;
     ensures cleared: *ref == \null;
     ensures result: \result == MT_PORT_RESUMED || \result == MT_PORT_TIMEOUT;
+    ensures handed: \result == MT_PORT_RESUMED <==> MtPortHandoffs != \old(MtPortHandoffs);
 */
 int32_t mt_port_suspend_s(mt_port_tref_t *ref, uint64_t timeout_us);
 

@@ -364,7 +364,7 @@ static uint32_t stop_requested(const mt_wq_t *q)
  * @retval MT_OK woken. @retval MT_E_BUSY another thread already waits on the queue. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    assigns q->wake, MtPortNow, MtLocked;
+    assigns q->wake, MtPortNow, MtPortHandoffs, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     ensures status: \result == MT_OK || \result == MT_E_BUSY;
@@ -397,7 +397,7 @@ void mt_wq_thread_body(void *arg)
 
     /* The queue's thread: no loop variant, it serves until a stop is requested. */
     /*@ loop invariant inv: MtWqInv(q) && MtLocked == 0;
-        loop assigns *q, MtPortNow, MtLocked;
+        loop assigns *q, MtPortNow, MtPortHandoffs, MtLocked;
     */
     while (mt_wq_serve_once(q) == MT_OK) {
     }
@@ -444,7 +444,7 @@ static void shot_reset(mt_wq_t *q, uint32_t s, uint32_t v)
 /*@ requires held: MtLocked == 1;
     requires inv: MtWqInv(q);
     requires slot: s < q->nitems;
-    assigns *q, MtPortNow;
+    assigns *q, MtPortNow, MtPortHandoffs;
     ensures held: MtLocked == 1;
     ensures inv: MtWqInv(q);
     ensures grown: q->nitems >= \old(q->nitems);

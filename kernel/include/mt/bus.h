@@ -564,7 +564,7 @@ mt_status_t mt_sub_copy_latest(mt_sub_t *s, void *out, uint32_t size, uint64_t n
  *  @retval MT_E_BUSY    another thread is already polling s. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtSubInv(s);
-    assigns s->sem.token, s->sem.waiter, MtPortNow, MtLocked;
+    assigns s->sem.token, s->sem.waiter, MtPortNow, MtPortHandoffs, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtSubInv(s);
     behavior state:
@@ -584,6 +584,7 @@ mt_status_t mt_sub_copy_latest(mt_sub_t *s, void *out, uint32_t size, uint64_t n
       assumes s->notify != 0 && MtSubPending(s) == 0 && s->sem.waiter == \null &&
               timeout_us > 0;
       ensures status: \result == MT_OK || \result == MT_E_TIMEOUT;
+      ensures handed: \result == MT_OK <==> MtPortHandoffs != \old(MtPortHandoffs);
       ensures no_token_left: s->sem.token == 0;
     complete behaviors;
     disjoint behaviors;

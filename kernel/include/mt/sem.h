@@ -41,6 +41,58 @@ typedef struct {
         (s->token == 1 ==> s->waiter == \null);
 */
 
+/* The abstract state the contracts below are stated in: the token is available; a waiter is
+ * parked. A change of representation changes these definitions, not the clauses. Between
+ * L1 and L2:
+ * - MtSemTook: the caller took the available token (none left; the waiter is kept);
+ * - MtSemKept: the token and the waiter are unchanged;
+ * - MtSemHandedOver: the parked waiter was resumed with the token, which never became
+ *   available, and no merge was counted;
+ * - MtSemSet: the token was set, no merge counted;
+ * - MtSemMerged: the token was already set and stays set; the merge is counted
+ *   (saturating).
+ * A signal meets exactly one of the last three: it never loses a token. MtSemSignalled and
+ * MtSemWaited state a whole signal and a whole wait (timeout t, result r) case by case, as the
+ * behaviors of mt_sem_signal_i and mt_sem_wait_s do; the task and ISR forms use them. */
+/*@ predicate MtSemAvailable(mt_sem_t *s) = s->token == 1;
+    predicate MtSemParked(mt_sem_t *s) = s->waiter != \null;
+
+    predicate MtSemTook{L1, L2}(mt_sem_t *s) =
+        \at(MtSemAvailable(s), L1) && !\at(MtSemAvailable(s), L2) &&
+        \at(s->waiter, L2) == \at(s->waiter, L1);
+    predicate MtSemKept{L1, L2}(mt_sem_t *s) =
+        \at(s->token, L2) == \at(s->token, L1) && \at(s->waiter, L2) == \at(s->waiter, L1);
+
+    predicate MtSemHandedOver{L1, L2}(mt_sem_t *s) =
+        !\at(MtSemAvailable(s), L2) && !\at(MtSemParked(s), L2) &&
+        \at(s->merged, L2) == \at(s->merged, L1);
+    predicate MtSemSet{L1, L2}(mt_sem_t *s) =
+        \at(MtSemAvailable(s), L2) && !\at(MtSemParked(s), L2) &&
+        \at(s->merged, L2) == \at(s->merged, L1);
+    predicate MtSemMerged{L1, L2}(mt_sem_t *s) =
+        \at(MtSemAvailable(s), L2) && !\at(MtSemParked(s), L2) &&
+        \at(s->merged, L2) == (\at(s->merged, L1) < 0xFFFFFFFF ? \at(s->merged, L1) + 1
+                                                                 : \at(s->merged, L1));
+
+    predicate MtSemSignalled{L1, L2}(mt_sem_t *s) =
+        (\at(MtSemParked(s), L1) ==> MtSemHandedOver{L1, L2}(s)) &&
+        (!\at(MtSemParked(s), L1) && !\at(MtSemAvailable(s), L1) ==> MtSemSet{L1, L2}(s)) &&
+        (!\at(MtSemParked(s), L1) && \at(MtSemAvailable(s), L1) ==> MtSemMerged{L1, L2}(s));
+
+    predicate MtSemWaited{L1, L2}(mt_sem_t *s, integer t, integer r) =
+        (\at(MtSemAvailable(s), L1) ==> r == MT_OK && MtSemTook{L1, L2}(s)) &&
+        (!\at(MtSemAvailable(s), L1) && \at(MtSemParked(s), L1) ==>
+            r == MT_E_BUSY && MtSemKept{L1, L2}(s)) &&
+        (!\at(MtSemAvailable(s), L1) && !\at(MtSemParked(s), L1) && t == 0 ==>
+            r == MT_E_TIMEOUT && MtSemKept{L1, L2}(s)) &&
+        (!\at(MtSemAvailable(s), L1) && !\at(MtSemParked(s), L1) && t > 0 ==>
+            (r == MT_OK || r == MT_E_TIMEOUT) &&
+            (r == MT_OK <==> \at(MtPortHandoffs, L2) != \at(MtPortHandoffs, L1)) &&
+            !\at(MtSemAvailable(s), L2) && !\at(MtSemParked(s), L2)) &&
+        (\at(MtPortHandoffs, L2) != \at(MtPortHandoffs, L1) ==>
+            !\at(MtSemAvailable(s), L1) && !\at(MtSemParked(s), L1) && t > 0);
+*/
+
 /** Initialise; `available` makes the first wait succeed at once. [init] */
 /*@ requires valid: \valid(s);
     assigns *s;
@@ -51,87 +103,88 @@ typedef struct {
 void mt_sem_init(mt_sem_t *s, bool available);
 
 /** Take the token, waiting up to timeout_us (0: never block; MT_WAIT_FOREVER:
- *  no limit). S-class: kernel lock held.
+ *  no limit). S-class: kernel lock held. MT_OK means the caller took the token, or
+ *  was parked and handed it by a signal (MtPortHandoffs moved).
  *  @retval MT_OK the token was taken.
  *  @retval MT_E_TIMEOUT no token within the timeout (none consumed).
  *  @retval MT_E_BUSY another task is already waiting. */
 /*@ requires held: MtLocked == 1;
     requires inv: MtSemInv(s);
-    assigns s->token, s->waiter, MtPortNow;
+    assigns s->token, s->waiter, MtPortNow, MtPortHandoffs;
     ensures held: MtLocked == 1;
     ensures inv: MtSemInv(s);
+    ensures parked_to_block: MtPortHandoffs != \old(MtPortHandoffs) ==>
+        \old(!MtSemAvailable(s) && !MtSemParked(s)) && timeout_us > 0;
     behavior token:
-      assumes s->token == 1;
+      assumes MtSemAvailable(s);
       ensures status: \result == MT_OK;
-      ensures taken: s->token == 0;
-      ensures no_waiter: s->waiter == \old(s->waiter);
+      ensures taken: MtSemTook{Pre, Post}(s);
     behavior busy:
-      assumes s->token == 0 && s->waiter != \null;
+      assumes !MtSemAvailable(s) && MtSemParked(s);
       ensures status: \result == MT_E_BUSY;
-      ensures unchanged: s->token == 0 && s->waiter == \old(s->waiter);
+      ensures unchanged: MtSemKept{Pre, Post}(s);
     behavior poll:
-      assumes s->token == 0 && s->waiter == \null && timeout_us == 0;
+      assumes !MtSemAvailable(s) && !MtSemParked(s) && timeout_us == 0;
       ensures status: \result == MT_E_TIMEOUT;
-      ensures unchanged: s->token == 0 && s->waiter == \null;
+      ensures unchanged: MtSemKept{Pre, Post}(s);
     behavior block:
-      assumes s->token == 0 && s->waiter == \null && timeout_us > 0;
+      assumes !MtSemAvailable(s) && !MtSemParked(s) && timeout_us > 0;
       ensures status: \result == MT_OK || \result == MT_E_TIMEOUT;
-      ensures no_token_consumed: s->token == 0 && s->waiter == \null;
+      ensures handed: \result == MT_OK <==> MtPortHandoffs != \old(MtPortHandoffs);
+      ensures no_token_consumed: !MtSemAvailable(s) && !MtSemParked(s);
     complete behaviors;
     disjoint behaviors;
 */
 mt_status_t mt_sem_wait_s(mt_sem_t *s, uint64_t timeout_us);
 
-/** mt_sem_wait_s() from task context (takes and releases the kernel lock). */
+/** mt_sem_wait_s() from task context (takes and releases the kernel lock): the same
+ *  outcomes. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtSemInv(s);
-    assigns s->token, s->waiter, MtPortNow, MtLocked;
+    assigns s->token, s->waiter, MtPortNow, MtPortHandoffs, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtSemInv(s);
-    ensures status: \result == MT_OK || \result == MT_E_TIMEOUT || \result == MT_E_BUSY;
-    ensures poll_never_blocks: timeout_us == 0 ==> \result != MT_OK ==> \old(s->token) == 0;
+    ensures waited: MtSemWaited{Pre, Post}(s, timeout_us, \result);
 */
 mt_status_t mt_sem_wait(mt_sem_t *s, uint64_t timeout_us);
 
-/** Give the token. I-class: kernel lock held (task or ISR). */
+/** Give the token. I-class: kernel lock held (task or ISR). A parked waiter is resumed
+ *  with it; else the token is set; else (already set) the merge is counted. */
 /*@ requires held: MtLocked == 1;
     requires inv: MtSemInv(s);
     assigns s->token, s->waiter, s->merged;
     ensures inv: MtSemInv(s);
-    ensures no_waiter: s->waiter == \null;
-    ensures merged_monotonic: s->merged >= \old(s->merged);
     behavior handoff:
-      assumes s->waiter != \null;
-      ensures direct: s->token == 0;
+      assumes MtSemParked(s);
+      ensures direct: MtSemHandedOver{Pre, Post}(s);
     behavior set:
-      assumes s->waiter == \null && s->token == 0;
-      ensures token: s->token == 1;
+      assumes !MtSemParked(s) && !MtSemAvailable(s);
+      ensures token: MtSemSet{Pre, Post}(s);
     behavior merge:
-      assumes s->waiter == \null && s->token == 1;
-      ensures token: s->token == 1;
-      ensures counted: s->merged == (\old(s->merged) < 0xFFFFFFFF ? \old(s->merged) + 1 : \old(s->merged));
+      assumes !MtSemParked(s) && MtSemAvailable(s);
+      ensures counted: MtSemMerged{Pre, Post}(s);
     complete behaviors;
     disjoint behaviors;
 */
 void mt_sem_signal_i(mt_sem_t *s);
 
-/** mt_sem_signal_i() from task context. */
+/** mt_sem_signal_i() from task context: the same outcomes. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtSemInv(s);
     assigns s->token, s->waiter, s->merged, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtSemInv(s);
-    ensures given: s->waiter == \null;
+    ensures given: MtSemSignalled{Pre, Post}(s);
 */
 void mt_sem_signal(mt_sem_t *s);
 
-/** mt_sem_signal_i() from an interrupt handler. */
+/** mt_sem_signal_i() from an interrupt handler: the same outcomes. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtSemInv(s);
     assigns s->token, s->waiter, s->merged, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtSemInv(s);
-    ensures given: s->waiter == \null;
+    ensures given: MtSemSignalled{Pre, Post}(s);
 */
 void mt_sem_signal_isr(mt_sem_t *s);
 

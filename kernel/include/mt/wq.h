@@ -503,7 +503,7 @@ uint32_t mt_wq_run_pending(mt_wq_t *q, uint32_t max);
  *  @retval MT_E_BUSY another thread already waits on this queue. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    assigns *q, MtPortNow, MtLocked;
+    assigns *q, MtPortNow, MtPortHandoffs, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     behavior stop:
@@ -522,7 +522,7 @@ mt_status_t mt_wq_serve_once(mt_wq_t *q);
  *  not terminate unless a stop is requested (no loop variant). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv((mt_wq_t *)arg);
-    assigns *((mt_wq_t *)arg), MtPortNow, MtLocked;
+    assigns *((mt_wq_t *)arg), MtPortNow, MtPortHandoffs, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv((mt_wq_t *)arg);
 */
@@ -547,7 +547,7 @@ void mt_wq_request_stop(mt_wq_t *q);
  *  @retval MT_E_BUSY another caller is already waiting for this item. */
 /*@ requires not_held: MtLocked == 0;
     requires item: MtWorkAttached(w);
-    assigns *(w->wq), MtPortNow, MtLocked;
+    assigns *(w->wq), MtPortNow, MtPortHandoffs, MtLocked;
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
     behavior busy:

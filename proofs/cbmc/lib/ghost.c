@@ -8,18 +8,23 @@
 
 int MtLocked;
 unsigned long long MtPortNow;
+unsigned long long MtPortHandoffs;
 int mtc_old_MtLocked;
 unsigned long long mtc_old_MtPortNow;
+unsigned long long mtc_old_MtPortHandoffs;
 
-/* Any lock state and any time: the function's requires then selects the legal ones. */
+/* Any lock state, any time and any hand-off count: the function's requires then selects the
+ * legal ones. */
 void mtc_ghosts_nondet(void)
 {
     MtLocked = (int)mtc_nondet_i32();
     MtPortNow = mtc_nondet_u64();
+    MtPortHandoffs = mtc_nondet_u64();
 }
 
 void mtc_snapshot_ghosts(void)
 {
     mtc_old_MtLocked = MtLocked;
     mtc_old_MtPortNow = MtPortNow;
+    mtc_old_MtPortHandoffs = MtPortHandoffs;
 }
