@@ -123,6 +123,7 @@ static uint32_t producer_count(mt_oring_t *r)
     ensures r->tail == MtIdxAdd(\old(r->tail), 1, r->slots);
     ensures \forall integer k; 0 <= k < r->elem ==>
         r->buf[MtIdxSlot(\old(r->tail), r->slots) * r->elem + k] == obj[k];
+    ensures MtORingOthersKept{Pre, Post}(r, MtIdxSlot(\old(r->tail), r->slots));
 */
 // cppcheck-suppress misra-c2012-5.9 ; D-106 module-local helper, one per translation unit
 static void put(mt_oring_t *r, const uint8_t *obj)

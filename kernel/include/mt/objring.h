@@ -72,6 +72,24 @@ typedef struct {
     logic integer MtORingCount(mt_oring_t *r) = MtIdxCount(r->tail, r->head, r->slots);
 */
 
+/* Slot contents (buf, elem and slots are constant after init):
+ * - MtORingSame: the object in slot `slot` equals the elem bytes at p;
+ * - MtORingOthersKept: between L1 and L2 every byte outside slot `slot` is unchanged (a push
+ *   writes the free slot only: the unread objects stay, in order);
+ * - MtORingBufKept: between L1 and L2 no byte of the storage changed. */
+/*@ predicate MtORingSame(mt_oring_t *r, integer slot, uint8_t *p) =
+        \forall integer k; 0 <= k < r->elem ==> r->buf[slot * r->elem + k] == p[k];
+
+    predicate MtORingOthersKept{L1, L2}(mt_oring_t *r, integer slot) =
+        \forall integer b; 0 <= b < \at(r->slots * r->elem, L1) ==>
+            (b < slot * \at(r->elem, L1) || slot * \at(r->elem, L1) + \at(r->elem, L1) <= b) ==>
+            \at(r->buf[b], L2) == \at(r->buf[b], L1);
+
+    predicate MtORingBufKept{L1, L2}(mt_oring_t *r) =
+        \forall integer b; 0 <= b < \at(r->slots * r->elem, L1) ==>
+            \at(r->buf[b], L2) == \at(r->buf[b], L1);
+*/
+
 /** Initialise over storage of MT_ORING_STORAGE_BYTES(elem, cap) bytes. [init]
  *  @retval MT_OK
  *  @retval MT_E_INVALID elem or cap is 0, or the storage would exceed
@@ -109,10 +127,12 @@ mt_status_t mt_oring_init(mt_oring_t *r, void *storage, uint32_t elem, uint32_t 
       ensures published: r->tail == MtIdxAdd(\old(r->tail), 1, r->slots);
       ensures data: \forall integer k; 0 <= k < r->elem ==>
           r->buf[MtIdxSlot(\old(r->tail), r->slots) * r->elem + k] == ((uint8_t *)obj)[k];
+      ensures others: MtORingOthersKept{Pre, Post}(r, MtIdxSlot(\old(r->tail), r->slots));
     behavior full:
       assumes MtIdxCount(r->tail, r->head, r->slots) >= r->cap;
       ensures status: \result == MT_E_FULL;
       ensures unchanged: r->tail == \old(r->tail);
+      ensures kept: MtORingBufKept{Pre, Post}(r);
     complete behaviors;
     disjoint behaviors;
 */
@@ -134,6 +154,10 @@ mt_status_t mt_oring_push(mt_oring_t *r, const void *obj);
     requires sep: \separated((uint8_t *)obj + (0 .. r->elem - 1), r, r->buf + (0 .. r->slots * r->elem - 1));
     assigns r->tail, r->head_cache, r->rejected, r->buf[0 .. r->slots * r->elem - 1];
     ensures inv: MtORingInv(r);
+    ensures data: \result != MT_E_FULL ==>
+        MtORingSame(r, MtIdxSlot(\old(r->tail), r->slots), (uint8_t *)obj);
+    ensures others: \result != MT_E_FULL ==>
+        MtORingOthersKept{Pre, Post}(r, MtIdxSlot(\old(r->tail), r->slots));
     behavior room:
       assumes MtIdxCount(r->tail, r->head, r->slots) < r->cap;
       ensures status: \result == MT_OK;
@@ -146,6 +170,7 @@ mt_status_t mt_oring_push(mt_oring_t *r, const void *obj);
       assumes MtIdxCount(r->tail, r->head, r->slots) > r->cap;
       ensures status: \result == MT_E_FULL;
       ensures unchanged: r->tail == \old(r->tail);
+      ensures kept: MtORingBufKept{Pre, Post}(r);
     complete behaviors;
     disjoint behaviors;
 */
@@ -191,6 +216,8 @@ uint32_t mt_oring_available(mt_oring_t *r);
       ensures status: \result == MT_OK;
       ensures consumed: r->head == MtIdxAdd(\old(r->head), 2, r->slots);
       ensures lost: r->lost == (\old(r->lost) < 0xFFFFFFFF ? \old(r->lost) + 1 : \old(r->lost));
+      ensures fifo: MtORingSame(r, MtIdxSlot(MtIdxAdd(\old(r->head), 1, r->slots), r->slots),
+                                (uint8_t *)out);
     complete behaviors;
     disjoint behaviors;
 */
@@ -203,8 +230,24 @@ mt_status_t mt_oring_pop(mt_oring_t *r, void *out);
     requires sep: \separated((uint8_t *)out + (0 .. r->elem - 1), r, r->buf + (0 .. r->slots * r->elem - 1));
     assigns r->head, r->tail_cache, r->lost, ((uint8_t *)out)[0 .. r->elem - 1];
     ensures inv: MtORingInv(r);
-    ensures status: \result == MT_OK || \result == MT_E_EMPTY;
-    ensures empty: \result == MT_E_EMPTY <==> MtORingCount(r) == 0;
+    ensures retained: MtORingCount(r) <= r->cap;
+    behavior empty:
+      assumes MtIdxCount(r->tail, r->head, r->slots) == 0;
+      ensures status: \result == MT_E_EMPTY;
+      ensures unchanged: r->head == \old(r->head);
+    behavior one:
+      assumes 1 <= MtIdxCount(r->tail, r->head, r->slots) <= r->cap;
+      ensures status: \result == MT_OK;
+      ensures kept: r->head == \old(r->head) && r->lost == \old(r->lost);
+      ensures copied: MtORingSame(r, MtIdxSlot(r->head, r->slots), (uint8_t *)out);
+    behavior drop_then_one:
+      assumes MtIdxCount(r->tail, r->head, r->slots) > r->cap;
+      ensures status: \result == MT_OK;
+      ensures dropped: r->head == MtIdxAdd(\old(r->head), 1, r->slots);
+      ensures lost: r->lost == (\old(r->lost) < 0xFFFFFFFF ? \old(r->lost) + 1 : \old(r->lost));
+      ensures copied: MtORingSame(r, MtIdxSlot(r->head, r->slots), (uint8_t *)out);
+    complete behaviors;
+    disjoint behaviors;
 */
 mt_status_t mt_oring_peek(mt_oring_t *r, void *out);
 
@@ -217,6 +260,12 @@ mt_status_t mt_oring_peek(mt_oring_t *r, void *out);
     ensures inv: MtORingInv(r);
     ensures status: \result == MT_OK || \result == MT_E_EMPTY;
     ensures empty: \result == MT_E_EMPTY <==> MtORingCount(r) == 0;
+    ensures dropped: r->head == (MtIdxCount(r->tail, \old(r->head), r->slots) > r->cap ?
+                                 MtIdxAdd(\old(r->head), 1, r->slots) : \old(r->head));
+    ensures written: \result == MT_OK ==>
+        MtORingSame(r, MtIdxSlot(r->head, r->slots), (uint8_t *)obj) &&
+        MtORingOthersKept{Pre, Post}(r, MtIdxSlot(r->head, r->slots));
+    ensures kept: \result == MT_E_EMPTY ==> MtORingBufKept{Pre, Post}(r);
 */
 mt_status_t mt_oring_update_front(mt_oring_t *r, const void *obj);
 
@@ -226,6 +275,9 @@ mt_status_t mt_oring_update_front(mt_oring_t *r, const void *obj);
     assigns r->head, r->tail_cache, r->lost;
     ensures inv: MtORingInv(r);
     ensures empty: MtORingCount(r) == 0;
+    ensures flushed: \result == (\old(MtORingCount(r)) > r->cap ? r->cap : \old(MtORingCount(r)));
+    ensures lost: r->lost == (\old(MtORingCount(r)) > r->cap && \old(r->lost) < 0xFFFFFFFF ?
+                              \old(r->lost) + 1 : \old(r->lost));
 */
 uint32_t mt_oring_flush(mt_oring_t *r);
 
