@@ -79,6 +79,17 @@ TEST(Status, EveryStatusHasItsOwnDistinctName)
 TEST(Status, SentinelIsNotAStatus)
 {
     EXPECT_STREQ(mt_status_str(MT_STATUS_COUNT), "MT_STATUS_?");
+    EXPECT_STREQ(mt_status_str(static_cast<mt_status_t>(1000)), "MT_STATUS_?");
+    EXPECT_STREQ(mt_status_names[MT_STATUS_COUNT], "MT_STATUS_?");
+}
+
+// The contract of mt_status_str returns the table's entry; the table itself holds the names.
+TEST(Status, TheTableHoldsTheNames)
+{
+    for (const Named &n : kAll) {
+        EXPECT_STREQ(mt_status_names[n.st], n.name);
+        EXPECT_EQ(mt_status_str(n.st), mt_status_names[n.st]);
+    }
 }
 
 } // namespace

@@ -1,48 +1,53 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file status.c
- * @brief Status names.
+ * @brief Status names: one table, indexed by status.
  */
 #include "mt/status.h"
 
+#include <stdint.h>
+
+const char *const mt_status_names[MT_STATUS_COUNT + 1] = {
+    [MT_OK] = "MT_OK",
+    [MT_E_INVALID] = "MT_E_INVALID",
+    [MT_E_FULL] = "MT_E_FULL",
+    [MT_E_EMPTY] = "MT_E_EMPTY",
+    [MT_E_DUPLICATE] = "MT_E_DUPLICATE",
+    [MT_E_TIMEOUT] = "MT_E_TIMEOUT",
+    [MT_E_BUSY] = "MT_E_BUSY",
+    [MT_E_RANGE] = "MT_E_RANGE",
+    [MT_E_TASK_ORDER] = "MT_E_TASK_ORDER",
+    [MT_E_TASK_RATE] = "MT_E_TASK_RATE",
+    [MT_E_TASK_BUDGET] = "MT_E_TASK_BUDGET",
+    [MT_E_TASK_COUNT] = "MT_E_TASK_COUNT",
+    [MT_E_LOOP_RATE] = "MT_E_LOOP_RATE",
+    [MT_E_TASK_FN] = "MT_E_TASK_FN",
+    [MT_W_DROPPED_OLDEST] = "MT_W_DROPPED_OLDEST",
+    [MT_E_MISSION_CMD] = "MT_E_MISSION_CMD",
+    [MT_E_MISSION_PARAM] = "MT_E_MISSION_PARAM",
+    [MT_E_MISSION_LOCATION] = "MT_E_MISSION_LOCATION",
+    [MT_E_MISSION_FRAME] = "MT_E_MISSION_FRAME",
+    [MT_E_MISSION_JUMP] = "MT_E_MISSION_JUMP",
+    [MT_E_MISSION_LOOP] = "MT_E_MISSION_LOOP",
+    [MT_E_MISSION_SIZE] = "MT_E_MISSION_SIZE",
+    [MT_E_MISSION_SYNTAX] = "MT_E_MISSION_SYNTAX",
+    [MT_E_STATE] = "MT_E_STATE",
+    [MT_W_WQ_MERGED] = "MT_W_WQ_MERGED",
+    [MT_E_BUS_MSG_SIZE] = "MT_E_BUS_MSG_SIZE",
+    [MT_E_BUS_QUEUE_LEN] = "MT_E_BUS_QUEUE_LEN",
+    [MT_E_BUS_STORAGE] = "MT_E_BUS_STORAGE",
+    [MT_E_BUS_BEHIND] = "MT_E_BUS_BEHIND",
+    [MT_E_BUS_TORN] = "MT_E_BUS_TORN",
+    [MT_W_BUS_MISSED] = "MT_W_BUS_MISSED",
+    [MT_STATUS_COUNT] = "MT_STATUS_?",
+};
+
 const char *mt_status_str(mt_status_t st)
 {
-    const char *name;
+    uint32_t i = (uint32_t)MT_STATUS_COUNT;
 
-    switch (st) {
-    case MT_OK: name = "MT_OK"; break;
-    case MT_E_INVALID: name = "MT_E_INVALID"; break;
-    case MT_E_FULL: name = "MT_E_FULL"; break;
-    case MT_E_EMPTY: name = "MT_E_EMPTY"; break;
-    case MT_E_DUPLICATE: name = "MT_E_DUPLICATE"; break;
-    case MT_E_TIMEOUT: name = "MT_E_TIMEOUT"; break;
-    case MT_E_BUSY: name = "MT_E_BUSY"; break;
-    case MT_E_RANGE: name = "MT_E_RANGE"; break;
-    case MT_E_TASK_ORDER: name = "MT_E_TASK_ORDER"; break;
-    case MT_E_TASK_RATE: name = "MT_E_TASK_RATE"; break;
-    case MT_E_TASK_BUDGET: name = "MT_E_TASK_BUDGET"; break;
-    case MT_E_TASK_COUNT: name = "MT_E_TASK_COUNT"; break;
-    case MT_E_LOOP_RATE: name = "MT_E_LOOP_RATE"; break;
-    case MT_E_TASK_FN: name = "MT_E_TASK_FN"; break;
-    case MT_W_DROPPED_OLDEST: name = "MT_W_DROPPED_OLDEST"; break;
-    case MT_E_MISSION_CMD: name = "MT_E_MISSION_CMD"; break;
-    case MT_E_MISSION_PARAM: name = "MT_E_MISSION_PARAM"; break;
-    case MT_E_MISSION_LOCATION: name = "MT_E_MISSION_LOCATION"; break;
-    case MT_E_MISSION_FRAME: name = "MT_E_MISSION_FRAME"; break;
-    case MT_E_MISSION_JUMP: name = "MT_E_MISSION_JUMP"; break;
-    case MT_E_MISSION_LOOP: name = "MT_E_MISSION_LOOP"; break;
-    case MT_E_MISSION_SIZE: name = "MT_E_MISSION_SIZE"; break;
-    case MT_E_MISSION_SYNTAX: name = "MT_E_MISSION_SYNTAX"; break;
-    case MT_E_STATE: name = "MT_E_STATE"; break;
-    case MT_W_WQ_MERGED: name = "MT_W_WQ_MERGED"; break;
-    case MT_E_BUS_MSG_SIZE: name = "MT_E_BUS_MSG_SIZE"; break;
-    case MT_E_BUS_QUEUE_LEN: name = "MT_E_BUS_QUEUE_LEN"; break;
-    case MT_E_BUS_STORAGE: name = "MT_E_BUS_STORAGE"; break;
-    case MT_E_BUS_BEHIND: name = "MT_E_BUS_BEHIND"; break;
-    case MT_E_BUS_TORN: name = "MT_E_BUS_TORN"; break;
-    case MT_W_BUS_MISSED: name = "MT_W_BUS_MISSED"; break;
-    case MT_STATUS_COUNT:
-    default: name = "MT_STATUS_?"; break;
+    if (st < MT_STATUS_COUNT) {
+        i = (uint32_t)st;
     }
-    return name;
+    return mt_status_names[i];
 }

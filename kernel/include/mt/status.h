@@ -68,9 +68,13 @@ typedef enum {
     MT_STATUS_COUNT = 31     /**< Number of statuses (sentinel, not a status). */
 } mt_status_t;
 
-/** Short stable name of a status ("MT_E_FULL"); "MT_STATUS_?" for an unknown value. */
+/** The status names, indexed by status ("MT_E_FULL" at MT_E_FULL); the entry at
+ *  MT_STATUS_COUNT is "MT_STATUS_?", the name of every value that is not a status. */
+extern const char *const mt_status_names[MT_STATUS_COUNT + 1];
+
+/** Short stable name of a status: its entry of mt_status_names. */
 /*@ assigns \nothing;
-    ensures named: \result != \null;
+    ensures named: \result == mt_status_names[st < MT_STATUS_COUNT ? st : MT_STATUS_COUNT];
 */
 const char *mt_status_str(mt_status_t st);
 
