@@ -26,7 +26,8 @@ goal not proved, a smoke test not passed, the WP gate's own verdict false, an AC
 finding no assumption accepts, a smoke canary not run or not as expected, a module with log
 findings or listed failures; a CBMC harness failed, timed out or pending, a public function
 without a harness, no harness at all; a translator test, TLC model, trace, ChibiOS harness or
-selected mutant not as expected; a count below the baseline. One function per check, in the
+selected mutant not as expected; a requirement of proofs/requirements.json not discharged (or
+no matrix); a count below the baseline. One function per check, in the
 table CHECKS; each returns the problems it found, naming the goal, harness, model or part.
 """
 import json
@@ -195,6 +196,24 @@ def check_summaries_fresh(run):
 
 
 # ------------------------------------------------------------------------------ WP
+
+def check_requirements(run):
+    """The traceability matrix (tools/requirements.py, written into the WP summary by the
+    full-module WP gate): present, and every requirement discharged."""
+    wp = run.sums["wp"]
+    if wp is None:
+        return []
+    trace = wp.get("requirements")
+    if not isinstance(trace, list) or not trace:
+        return [f"traceability: no requirements matrix in {run.path('wp')} (make wp checks "
+                "proofs/requirements.json over the whole module set)"]
+    bad = []
+    for r in trace:
+        if r.get("ok") is not True:
+            bad += [f"traceability: requirement {r.get('id', '?')}: {p}"
+                    for p in (r.get("problems") or ["not discharged"])]
+    return bad
+
 
 def wp_modules(run):
     return sorted(((run.sums["wp"] or {}).get("modules") or {}).items())
@@ -492,6 +511,7 @@ CHECKS = [
     ("wp-log", check_wp_log),
     ("wp-replayed", check_wp_replayed),
     ("wp-failures", check_wp_failures),
+    ("traceability", check_requirements),
     ("cbmc-count", check_cbmc_count),
     ("cbmc-failed", check_cbmc_failed),
     ("cbmc-timeout", check_cbmc_timeout),
@@ -514,11 +534,12 @@ def run_checks(run):
 
 # A shard of a sharded run (PROVE_SHARD=i/N, tools/prove_shard.py) proves part of the work, and
 # the merge's report judges the whole. In a shard's own report these checks are left to the
-# merge: the baseline floor (counts of the whole run) in every shard; the smoke canary and the
+# merge: the baseline floor (counts of the whole run) and the traceability matrix (clauses of
+# every module) in every shard; the smoke canary and the
 # WP gate's own verdict in every shard but the first (the canary runs in shard 1 only, and
 # proofs/wp/gate.py fails without it; every other item of its verdict is a check here:
 # wp-goals, wp-smoke, wp-log, wp-failures, wp-acsl).
-SHARD_WAIVED = ("baseline",)
+SHARD_WAIVED = ("baseline", "traceability")
 SHARD_WAIVED_AFTER_FIRST = ("wp-canary", "wp-gate")
 
 

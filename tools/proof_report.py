@@ -33,6 +33,7 @@ import xml.sax.saxutils as sx
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import proof_gate as gate  # noqa: E402  (tools/proof_gate.py)
+import requirements as reqs  # noqa: E402  (tools/requirements.py)
 
 
 # ------------------------------------------------------------------------------ summary.json
@@ -364,8 +365,22 @@ def report_md(run, summary, table):
     cache = wp_cache_lines(summary)
     if cache:
         md += ["", "## WP cache per module", ""] + [f"- {x}" for x in cache]
-    md += ["", "## Per function", "", table, ""] + tla_md(run) + assumptions_md(run)
+    md += ["", "## Per function", "", table, ""] + trace_md(run) + tla_md(run) + \
+        assumptions_md(run)
     return "\n".join(md) + "\n"
+
+
+def trace_md(run):
+    """The traceability matrix: each requirement of proofs/requirements.json with the contract
+    clauses (proved by WP), tests and TLA+ properties that discharge it."""
+    trace = (run.sums["wp"] or {}).get("requirements")
+    if not trace:
+        return []
+    good = sum(r.get("ok") is True for r in trace)
+    return ["## Traceability", "",
+            f"{good} of {len(trace)} requirements discharged (proofs/requirements.json; every "
+            "named clause proved by WP in this run, every test and model present and checked).",
+            ""] + reqs.matrix_lines(trace) + [""]
 
 
 def console(run, summary, table):
@@ -377,6 +392,10 @@ def console(run, summary, table):
         print("wp cache " + line)
     for k, v in sorted(summary["counts"].items()):
         print(f"{k:22s} {v}")
+    trace = (run.sums["wp"] or {}).get("requirements")
+    if trace:
+        print(f"requirements: {sum(r.get('ok') is True for r in trace)}/{len(trace)} discharged "
+              "(matrix in the report)")
     print(f"run: {summary['mode_text']}")
     print(f"report: {run.build}/proof/report.md, {run.build}/proof/summary.json, "
           f"{run.build}/proof/junit.xml")

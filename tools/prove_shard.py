@@ -344,9 +344,12 @@ def merge_module(dirs, out):
         f.write(f"{secs:.1f}\n")
 
 
-def run_gate(wp_dir, modules):
+def run_gate(wp_dir, modules, requirements=""):
+    """proofs/wp/gate.py on the modules; requirements: a traceability file to check too (only
+    over the whole module set: the merge)."""
+    extra = ["--requirements", requirements] if requirements else []
     return subprocess.run([sys.executable, os.path.join(ROOT, "proofs", "wp", "gate.py"),
-                           "--wp-dir", wp_dir, "--modules", ",".join(modules)]).returncode
+                           "--wp-dir", wp_dir, "--modules", ",".join(modules)] + extra).returncode
 
 
 def run_wp(shard_file):
@@ -412,7 +415,7 @@ def shard_modules(sh):
                               if u["tool"] == "wp" and u["shard"] == sh["shard"]))
 
 
-def merge_wp(out, shards):
+def merge_wp(out, shards, requirements=""):
     """Per module, the union of the shards' reports; the canary of the shard that ran it; the
     WP gate on the result (OUT/proof/wp/summary.json). Returns the unit problems."""
     planned = [u for u in shards[0]["units"] if u["tool"] == "wp"]
@@ -436,7 +439,7 @@ def merge_wp(out, shards):
         canary = os.path.join(sh["build"], "proof", "wp", "canary")
         if sh["canary"] and os.path.isdir(canary):
             shutil.copytree(canary, os.path.join(wp_dir, "canary"), dirs_exist_ok=True)
-    run_gate(wp_dir, modules)
+    run_gate(wp_dir, modules, requirements)
     return unit_problems(planned, seen)
 
 
@@ -519,7 +522,7 @@ def fresh_out(out):
     os.makedirs(proof)
 
 
-def merge(out, builds, baseline):
+def merge(out, builds, baseline, requirements=os.path.join(ROOT, "proofs", "requirements.json")):
     shards = sorted((load_shard(b) for b in builds), key=lambda s: s["shard"])
     bad = []
     n, digest = shards[0]["of"], shards[0]["digest"]
@@ -537,7 +540,7 @@ def merge(out, builds, baseline):
     if bad:
         return fail(bad)
     fresh_out(out)
-    bad = merge_wp(out, shards) + merge_cbmc(out, shards)
+    bad = merge_wp(out, shards, requirements) + merge_cbmc(out, shards)
     write_json(os.path.join(out, "proof", "merge.json"),
                {"shards": [os.path.abspath(sh["build"]) for sh in shards], "of": n,
                 "digest": digest, "problems": bad})
@@ -602,6 +605,7 @@ def main(argv=None):
     p.add_argument("shard_file")
     p = sub.add_parser("merge")
     p.add_argument("--baseline", default="proofs/baseline.json")
+    p.add_argument("--requirements", default=os.path.join(ROOT, "proofs", "requirements.json"))
     p.add_argument("out")
     p.add_argument("builds", nargs="+")
     p = sub.add_parser("costs")
@@ -610,7 +614,7 @@ def main(argv=None):
     if args.cmd == "wp":
         return run_wp(args.shard_file)
     if args.cmd == "merge":
-        return merge(args.out, args.builds, args.baseline)
+        return merge(args.out, args.builds, args.baseline, args.requirements)
     if args.cmd == "costs":
         return write_costs(args.wp_dir)
     i, n = parse_shard(args.shard)

@@ -27,6 +27,8 @@ import sys
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import cache as wp_cache  # noqa: E402  (proofs/wp/cache.py)
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import requirements as reqs  # noqa: E402  (tools/requirements.py)
 
 # Log lines that fail the gate: (regex, why).
 FATAL_LOG = [
@@ -306,6 +308,14 @@ def gate(args):
     out.append(f"smoke canary: {canary}")
     if not re.match(r"^wp-canary: \d+ functions as expected", canary):
         problems.append(f"smoke canary: {canary} (make wp-canary, proofs/wp/canary/)")
+    # Traceability (tools/requirements.py): only over the full module set (make wp, a merge).
+    trace = None
+    if args.requirements:
+        trace = reqs.check(reqs.load(args.requirements), reqs.wp_goals(wp_dir, modules))
+        good = sum(r["ok"] for r in trace)
+        out.append(f"requirements: {good}/{len(trace)} discharged (every named clause proved, "
+                   "every named test and model present; the matrix is in the proof report)")
+        problems += [f"requirement {r['id']}: {p}" for r in trace for p in r["problems"]]
     info = sum(len(s["info"]) for s in stats)
     if info:
         out.append(f"note: {info} [wp:pedantic-assigns] warnings (no \\from on assigned "
@@ -334,6 +344,8 @@ def gate(args):
         "smoke_canary": canary,
         "pass": ok,
     }
+    if trace is not None:
+        summary["requirements"] = trace
     sfile = args.summary or os.path.join(wp_dir, "summary.json")
     os.makedirs(os.path.dirname(sfile) or ".", exist_ok=True)
     with open(sfile, "w", encoding="utf-8") as f:
@@ -417,6 +429,8 @@ def main():
     ap.add_argument("--wp-dir", default=os.path.join(ROOT, "build", "proof", "wp"))
     ap.add_argument("--modules", default="")
     ap.add_argument("--summary", default="")
+    ap.add_argument("--requirements", default="",
+                    help="check this traceability file (proofs/requirements.json) too")
     ap.add_argument("--quiet", action="store_true", help="module lines only")
     ap.add_argument("--diversity", action="store_true")
     ap.add_argument("--z3-dir", default="")

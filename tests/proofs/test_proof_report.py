@@ -54,6 +54,9 @@ def passing_set():
         "by_prover": {"z3": 6300}, "cache_replayed": 1000, "cache_fresh": 400,
         "modules_run": ["ring", "sched"],
         "acsl_forbidden": [], "smoke_canary": CANARY_OK, "pass": True,
+        "requirements": [{"id": "R-1", "text": "ring writes in order", "ok": True,
+                          "clauses": [{"name": "mt_ring_write:data", "state": "proved"}],
+                          "tests": [], "models": [], "problems": []}],
     }
     names = ["mt_ring_write", "mt_sched_add", "mt_sched_tick"]
     cbmc = {"harnesses": 3, "passed": 3, "record_mode": "properties", "properties_fresh": 3,
@@ -332,6 +335,29 @@ def test_unreadable_baseline_fails(proof):
 def test_malformed_acsl_site_fails(proof):
     path = assumptions_with_site(proof, "kernel/include/mt/ring.h")
     assert_fails(proof.run("--assumptions", path), "T1", "acsl_sites entry")
+
+
+def test_requirements_matrix_missing_fails(proof):
+    proof.edit("wp/summary.json", lambda w: w.pop("requirements"))
+    assert_fails(proof.run(), "traceability: no requirements matrix")
+
+
+def test_requirement_not_discharged_fails(proof):
+    def unprove(w):
+        r = w["requirements"][0]
+        r.update(ok=False, problems=["clause mt_ring_write:data: not proved"])
+        r["clauses"][0]["state"] = "not proved"
+    proof.edit("wp/summary.json", unprove)
+    res = proof.run()
+    assert_fails(res, "traceability: requirement R-1", "mt_ring_write:data: not proved")
+
+
+def test_report_prints_the_traceability_matrix(proof):
+    res = proof.run()
+    assert res.rc == 0, res.out
+    with open(os.path.join(proof.proof, "report.md"), encoding="utf-8") as f:
+        md = f.read()
+    assert "## Traceability" in md and "| R-1 ring writes in order | 1/1: `mt_ring_write:data`" in md
 
 
 def test_wp_canary_not_run_fails(proof):

@@ -92,7 +92,8 @@ class Prove:
 
     def __init__(self, tmp):
         self.repo = os.path.join(str(tmp), "repo")
-        for rel in ("tools/prove.sh", "tools/proof_report.py", "tools/proof_gate.py"):
+        for rel in ("tools/prove.sh", "tools/proof_report.py", "tools/proof_gate.py",
+                    "tools/requirements.py"):
             copy_in(self.repo, rel)
         put_exec(os.path.join(self.repo, "tools", "bootstrap.sh"), STUB_BOOTSTRAP)
         put_exec(os.path.join(self.repo, "proofs", "cbmc", "cbmc.mk"), "")
@@ -187,7 +188,6 @@ def test_prove_sh_prove_parts_runs_only_those(prove):
     assert list(prove.parts()) == ["wp", "tla"] and "stub make cbmc" not in out
 
 
-# ------------------------------------------------------------------------------ run_cbmc.sh
 def test_prove_sh_lanes_follow_the_cbmc_record_mode(prove):
     rc, out = prove.run()
     assert rc == 0, out
@@ -198,6 +198,7 @@ def test_prove_sh_lanes_follow_the_cbmc_record_mode(prove):
     assert "lane 1: wp tla-trace-mission; lane 2: cbmc cbmc-test chibios-cbmc tla\n" in out
 
 
+# ------------------------------------------------------------------------------ run_cbmc.sh
 
 class Chibios:
     """A copy of hal_chibios/proofs/run_cbmc.sh in a tree of its own, with stub cbmc."""
