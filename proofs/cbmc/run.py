@@ -358,7 +358,9 @@ def main():
             reach = e.get("reach", [])
             rec = e.pop("_record", None)
             if rec and mode == "save":
+                # saved as each harness ends: a run stopped half-way keeps what it proved
                 saved[n] = rec
+                save_records(dict(load_records(), **{n: rec}))
             src = {"replayed": " (replayed)", "fresh": " (fresh)   "}.get(
                 e.get("coverage_source"), "")
             psrc = {"replayed": " (replayed)", "fresh": " (fresh)   "}.get(
