@@ -359,10 +359,14 @@ void mt_sched_note_sample(mt_sched_t *s, uint64_t sample_us);
 */
 void mt_sched_loop_once(mt_sched_t *s, mt_sample_wait_fn_t wait, void *ctx);
 
-/** Time left in the running task's allowance (0 when over or idle). */
+/** Time left in the running task's allowance (0 when over or idle), at the clock
+ *  reading it takes (MtPortNow after the call). */
 /*@ requires inv: MtSchedInv(s);
     assigns MtPortNow;
     ensures bounded: \result <= s->task_allowed_us;
+    ensures exact: \result == (s->current < 0 || MtPortNow < s->task_start_us ? 0 :
+        MtPortNow - s->task_start_us >= s->task_allowed_us ? 0 :
+        s->task_allowed_us - (MtPortNow - s->task_start_us));
 */
 uint32_t mt_sched_time_available_us(const mt_sched_t *s);
 
@@ -394,6 +398,9 @@ void mt_sched_task_report(const mt_sched_t *s, uint32_t i, mt_task_report_t *r);
     assigns *r;
     ensures mean_guarded: s->loops == 0 ==> r->mean_us == 0;
     ensures load: r->load_permille <= 1000;
+    ensures copied: r->ticks == s->tick && r->loops == s->loops && r->min_us == s->loop_min_us &&
+        r->max_us == s->loop_max_us && r->long_loops == s->long_loops &&
+        r->extra_us == s->extra_us && r->filtered_us == s->filtered_loop_q8 / 256;
 */
 void mt_sched_loop_report(const mt_sched_t *s, mt_loop_report_t *r);
 
