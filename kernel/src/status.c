@@ -7,7 +7,7 @@
 
 #include <stdint.h>
 
-const char *const mt_status_names[MT_STATUS_COUNT + 1] = {
+const char *const mt_status_names[(int)MT_STATUS_COUNT + 1] = {
     [MT_OK] = "MT_OK",
     [MT_E_INVALID] = "MT_E_INVALID",
     [MT_E_FULL] = "MT_E_FULL",

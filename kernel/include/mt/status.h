@@ -70,7 +70,7 @@ typedef enum {
 
 /** The status names, indexed by status ("MT_E_FULL" at MT_E_FULL); the entry at
  *  MT_STATUS_COUNT is "MT_STATUS_?", the name of every value that is not a status. */
-extern const char *const mt_status_names[MT_STATUS_COUNT + 1];
+extern const char *const mt_status_names[(int)MT_STATUS_COUNT + 1];
 
 /** Short stable name of a status: its entry of mt_status_names. */
 /*@ assigns \nothing;
