@@ -10,7 +10,7 @@
 /*@ requires held: MtLocked == 1;
     requires inv: MtSemInv(s);
     requires nobody: s->waiter == \null;
-    assigns s->token, s->waiter, s->merged, MtPortNow;
+    assigns s->token, s->waiter, s->merged, MtPortNow, MtPortHandoffs;
     ensures taken: \result == MT_OK && s->token == 0;
 */
 mt_status_t law_sem_signal_then_poll(mt_sem_t *s)
@@ -23,7 +23,7 @@ mt_status_t law_sem_signal_then_poll(mt_sem_t *s)
 /*@ requires held: MtLocked == 1;
     requires inv: MtSemInv(s);
     requires nobody: s->waiter == \null;
-    assigns s->token, s->waiter, s->merged, MtPortNow;
+    assigns s->token, s->waiter, s->merged, MtPortNow, MtPortHandoffs;
     ensures one_token: \result == MT_E_TIMEOUT && s->token == 0;
     ensures merge_counted: s->merged >= \old(s->merged);
 */
@@ -42,7 +42,7 @@ mt_status_t law_sem_binary(mt_sem_t *s)
 /*@ requires held: MtLocked == 1;
     requires inv: MtSemInv(s);
     requires empty: s->token == 0 && s->waiter == \null;
-    assigns s->token, s->waiter, MtPortNow;
+    assigns s->token, s->waiter, MtPortNow, MtPortHandoffs;
     ensures no_token_created: \result == MT_E_TIMEOUT && s->token == 0 && s->waiter == \null;
 */
 mt_status_t law_sem_poll_empty(mt_sem_t *s)
