@@ -44,10 +44,12 @@ const char *const mt_status_names[(int)MT_STATUS_COUNT + 1] = {
 
 const char *mt_status_str(mt_status_t st)
 {
-    uint32_t i = (uint32_t)MT_STATUS_COUNT;
+    /* compared as unsigned: a compiler may give the enum a signed type, and a value that is
+     * not a status may then be negative */
+    uint32_t i = (uint32_t)st;
 
-    if (st < MT_STATUS_COUNT) {
-        i = (uint32_t)st;
+    if (i >= (uint32_t)MT_STATUS_COUNT) {
+        i = (uint32_t)MT_STATUS_COUNT;
     }
     return mt_status_names[i];
 }

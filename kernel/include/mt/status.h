@@ -74,7 +74,7 @@ extern const char *const mt_status_names[(int)MT_STATUS_COUNT + 1];
 
 /** Short stable name of a status: its entry of mt_status_names. */
 /*@ assigns \nothing;
-    ensures named: \result == mt_status_names[st < MT_STATUS_COUNT ? st : MT_STATUS_COUNT];
+    ensures named: \result == mt_status_names[0 <= st < MT_STATUS_COUNT ? st : MT_STATUS_COUNT];
 */
 const char *mt_status_str(mt_status_t st);
 
