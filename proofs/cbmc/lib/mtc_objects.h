@@ -19,7 +19,7 @@
 #define MTC_ELEM_MAX 4u  /* bytes per object-ring element */
 #define MTC_TASKS_MAX 3u /* entries in a task table */
 
-/* Ring capacities (proofs/assumptions.json, B2). `make cbmc`: every capacity in [1, MTC_CAP_SMALL],
+/* Ring capacities (proofs/assumptions.json, B1). `make cbmc`: every capacity in [1, MTC_CAP_SMALL],
  * so every wrap pattern of the mirror indices occurs, with indices, counters and lengths
  * nondeterministic. `make cbmc-max` (MTC_BIG): the two largest capacities (2^30 - 1 and
  * 2^30 for the byte ring; for the object ring the two largest for each element size), with
@@ -45,7 +45,7 @@ mt_bring_t *mtc_bring(void);
 mt_oring_t *mtc_oring(uint32_t elem_max);
 
 /* A scheduler whose table has 1..nmax entries (own object); loop rate from
- * mtc_loop_rates_ok and task rates from mtc_task_rates (B3), every other field any value
+ * mtc_loop_rates_ok and task rates from mtc_task_rates (B13), every other field any value
  * (ticks, run ticks, statistics, times: up to their types' maxima). */
 mt_sched_t *mtc_sched(uint32_t nmax);
 
@@ -59,7 +59,7 @@ uint32_t mtc_loop_rate(int invalid);
 /* Give each of the n tasks a rate (mHz) from a set relative to the loop rate: 0 (a fast
  * task), 1 (the slowest), 1000, loop_rate * 1000 / 3, loop_rate * 1000 (the fastest normal
  * task), loop_rate * 1000 + 1 and UINT32_MAX (invalid). Rates divide the loop rate in the
- * interval computation: a non-linear operand, hence a set (B3). */
+ * interval computation: a non-linear operand, hence a set (B13). */
 void mtc_task_rates(mt_task_t *tasks, uint32_t n, uint32_t loop_rate_hz);
 
 /* A proc set, any contents (the requires bounds count by MT_CFG_PROC_MAX). */
@@ -76,14 +76,14 @@ uint8_t *mtc_bytes(uint32_t n);
 
 /* One of the n values (nondeterministic choice). Used for the operand of a non-linear
  * operation (a product or quotient of two variables) whose other operand stays fully
- * nondeterministic (proofs/assumptions.json, B3). */
+ * nondeterministic (proofs/assumptions.json, B13). */
 uint32_t mtc_pick_u32(const uint32_t *vals, uint32_t n);
 #define MTC_PICK(arr) mtc_pick_u32((arr), (uint32_t)(sizeof(arr) / sizeof((arr)[0])))
 
 /* A nondeterministic non-NULL callback (never called: assumption A1, proofs/assumptions.json). */
 void *mtc_callback(void);
 
-/* A work queue (MT_CFG_WQ_MAX_ITEMS = 4, Makefile.common, assumption B1) with every field
+/* A work queue (MT_CFG_WQ_MAX_ITEMS = 2, Makefile.common, assumption B1) with every field
  * nondeterministic except the pointers: each slot's function is NULL or a callback stand-in,
  * each semaphore's waiter NULL or a parked thread (the requires, MtWqInv, then selects the
  * legal states: any permutation, head, count, counters, times, timers, single-shot states). */
@@ -113,7 +113,7 @@ mt_mission_t *mtc_mission(void);
 mt_mission_cmd_t *mtc_mission_cmds(uint32_t n);
 
 /* A topic (topic bus, built with BUS_CBMC_CFG: messages of 1..2 bytes, queues of 1..4, 2
- * notifiers, 2 reliable subscribers, 2 copy attempts; assumption B1) over its own storage of
+ * notifiers, 2 reliable subscribers, 2 copy attempts; assumption B7) over its own storage of
  * size * qlen bytes; every other field nondeterministic (generations, stamps, counters up to
  * their maxima; notifier callbacks NULL or a callback stand-in). */
 mt_topic_t *mtc_topic(void);

@@ -10,7 +10,7 @@ void harness(void)
 {
     mt_oring_t *r = MTC_NEW(mt_oring_t, 1u);
     /* cap: any value; elem: small sizes, the largest that fit, and values whose product with
-     * cap + 1 overflows 32 bits (B3: one operand of the product from a set) */
+     * cap + 1 overflows 32 bits (B15: one operand of the product from a set) */
     static const uint32_t elems[] = {0u, 1u, 2u, 3u, 4u, 24u, 0x1000u, MT_ORING_BYTES_MAX / 2u,
                                      MT_ORING_BYTES_MAX, MT_ORING_BYTES_MAX + 1u, 0xFFFFFFFFu};
     uint32_t elem = MTC_PICK(elems);

@@ -8,7 +8,7 @@
 
 void harness(void)
 {
-    /* elem multiplies slots in the storage bound: a non-linear operand, hence a set (B3) */
+    /* elem multiplies slots in the storage bound: a non-linear operand, hence a set (B15) */
     static const uint32_t elems[] = {0u, 1u, 3u, 64u, MT_ORING_BYTES_MAX, 0xFFFFFFFFu};
     mt_oring_t *r = MTC_NEW(mt_oring_t, 1u);
     r->elem = MTC_PICK(elems);

@@ -10,14 +10,14 @@ void harness(void)
 {
     uint64_t *deadline = (uint64_t *)mtc_alloc(1u, sizeof(uint64_t), MTC_K_BYTES);
     uint64_t now = mtc_nondet_u64();
-    /* now and *deadline: any values (up to 2^64 - 1); the divisor from a set (B3) */
+    /* now and *deadline: any values (up to 2^64 - 1); the divisor from a set (B14) */
     static const uint32_t periods[] = {0u, 1u, 2u, 3u, 1000u, 2500u, 1000000u, 0x80000001u,
                                        0xFFFFFFFFu};
     uint32_t period_us = MTC_PICK(periods);
     mtc_ghosts_nondet();
 
     __CPROVER_assume(mtc_pre_mt_proc_period_next(deadline, now, period_us));
-    /* Lemma MtModStep (kernel/spec/mt_spec_arith.h, proved by WP) at n = now - *deadline,
+    /* Lemma MtModStep (kernel/spec/mt_spec_div.h, proved by WP) at n = now - *deadline,
      * p = period_us: (n - n % p + p) % p == 0, the late deadline is on the grid. Assumed
      * (B12): a fact about a product and a quotient that the solver does not derive. */
     if (now >= *deadline) {

@@ -12,7 +12,7 @@ void harness(void)
     __CPROVER_assume(n >= 1u && n <= MTC_TASKS_MAX);
     mt_task_t *tasks = mtc_tasks(n);
     uint32_t i = mtc_nondet_u32();
-    uint32_t rate = mtc_loop_rate(1);               /* valid and invalid rates (B3) */
+    uint32_t rate = mtc_loop_rate(1);               /* valid and invalid rates (B13) */
     mtc_task_rates(tasks, n >= 1u && n <= MTC_TASKS_MAX ? n : 1u, rate);
     mtc_ghosts_nondet();
 

@@ -12,7 +12,7 @@ void harness(void)
     uint32_t n = mtc_nondet_u32();
     __CPROVER_assume(n <= MTC_TASKS_MAX || n > MT_CFG_SCHED_MAX_TASKS);
     mt_task_t *tasks = mtc_tasks(n >= 1u && n <= MTC_TASKS_MAX ? n : 1u);
-    uint32_t rate = mtc_loop_rate(1);               /* valid and invalid rates (B3) */
+    uint32_t rate = mtc_loop_rate(1);               /* valid and invalid rates (B13) */
     mtc_task_rates(tasks, n >= 1u && n <= MTC_TASKS_MAX ? n : 1u, rate);
     uint32_t *bad_index = (uint32_t *)mtc_alloc(1u, sizeof(uint32_t), MTC_K_BYTES);
     mtc_ghosts_nondet();

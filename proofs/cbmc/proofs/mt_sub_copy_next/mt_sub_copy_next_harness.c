@@ -3,7 +3,7 @@
  * tools/acsl2cbmc.py into mt_sub_copy_next_contract.h. Shape: nondeterministic objects, assume the
  * requires, snapshot, call, assert ensures/behaviours/assigns; MTC_REACH lines are coverage
  * witnesses that the harness admits the extreme values named. Configuration: BUS_CBMC_CFG
- * (proofs/cbmc/Makefile.common, assumption B1). */
+ * (proofs/cbmc/Makefile.common, assumption B7). */
 #include "mtc_objects.h"
 #include "mt_sub_copy_next_contract.h"
 

@@ -9,7 +9,7 @@
 void harness(void)
 {
     uint64_t ticks = mtc_nondet_u64();
-    /* ticks: any value up to 2^64 - 1; the rate from a set (B3) */
+    /* ticks: any value up to 2^64 - 1; the rate from a set (B14) */
     static const uint32_t rates[] = {0u, 1u, 3u, 1000u, 32768u, 1000000u, 16000000u,
                                      0xFFFFFFFFu};
     uint32_t hz = MTC_PICK(rates);
