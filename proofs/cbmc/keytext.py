@@ -130,10 +130,12 @@ def function_name(item):
 
 def extern_object_name(item):
     """The name an `extern` object declaration (no initialiser, no function type) declares."""
-    if not re.match(r"\s*extern\b", item.text) or "(" in item.text or "=" in item.text:
+    if not re.match(r"\s*extern\b", item.text) or "=" in item.text:
         return None
     m = re.search(r"([A-Za-z_]\w*)\s*(?:\[[^\]]*\]\s*)*;\s*$", item.text)
-    return m.group(1) if m else None
+    if m is None or "(" in item.text[:m.start()]:
+        return None  # a function or function pointer, or not a plain object
+    return m.group(1)
 
 
 def main():

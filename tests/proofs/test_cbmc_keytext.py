@@ -33,6 +33,7 @@ static int mtc_MtUnused(int mtc_st, int x)
 }}
 int mt_unused_proto(int x);
 extern const char *const mt_unused_names[3 + 1];
+extern const char *const mt_unused_sized[(int)3 + 1];
 extern int mt_used_object;
 int mt_sem_wait(mt_sem_t *s);
 static int mtc_model(int x)
@@ -80,6 +81,7 @@ def test_unreferenced_functions_and_prototypes_go():
     assert "mtc_MtUnused" not in out
     assert "mt_unused_proto" not in out
     assert "mt_unused_names" not in out and "extern int mt_used_object;" in out
+    assert "mt_unused_sized" not in out, "a cast in the size is not a function type"
     assert "mt_sem_unused" not in out
     assert "mtc_model" not in out
     assert "mtc_e0 > 7" not in out, "the helper only an unused function calls stays"
