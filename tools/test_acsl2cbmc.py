@@ -687,7 +687,15 @@ class RecordKeys(unittest.TestCase):
         self.assertEqual(k_a, self.cover_key(self.b), "the key depends on the location")
         self.assertEqual(k_a, k_repo, "a copy of the repository gives another key")
         self.assertNotEqual(k_a, self.cover_key(self.a, ["UNWIND=7"]), "an option is not in the key")
+        # keytext.py: a moved header line is not in the key; a new declaration is
         prepend(os.path.join(self.b, "kernel", "include", "mt", "ring.h"), "/* moved */\n")
+        self.assertEqual(k_a, self.cover_key(self.b), "a moved header line changed the key")
+        ring_h = os.path.join(self.b, "kernel", "include", "mt", "ring.h")
+        with open(ring_h, encoding="utf-8") as f:
+            text = f.read()
+        with open(ring_h, "w", encoding="utf-8") as f:
+            f.write(text.replace("#define MT_BRING_CAP_MAX 0x40000000u",
+                                 "#define MT_BRING_CAP_MAX 0x3FFFFFFFu"))
         self.assertNotEqual(k_a, self.cover_key(self.b), "a header change is not in the key")
 
     @unittest.skipUnless(os.path.exists(os.path.join(BIN, "goto-cc")), "CBMC not installed")
