@@ -186,11 +186,15 @@ def load_records():
 
 
 def save_records(records):
-    with open(RECORD, "w") as f:
+    # written beside the file, then renamed over it: a run stopped while saving leaves the
+    # previous file whole
+    tmp = RECORD + ".tmp"
+    with open(tmp, "w") as f:
         f.write("{\n")
         f.write(",\n".join(f"{json.dumps(n)}: {json.dumps(records[n], sort_keys=True)}"
                            for n in sorted(records)))
         f.write("\n}\n")
+    os.replace(tmp, RECORD)
 
 
 def input_key(name, big, target):
@@ -345,7 +349,6 @@ def main():
     # without one goes first), so the 2 workers do not end on one long harness while the other
     # core idles. The order changes no verdict; the summary lists the harnesses by name.
     names.sort(key=lambda n: (-records.get(n, {}).get("property_cpu_seconds", 1e9), n))
-    saved = {}
     t0 = time.monotonic()
     with ThreadPoolExecutor(max_workers=max(1, args.j)) as ex:
         futs = [ex.submit(run_one, n, args.max, out_root, args.timeout, records, mode)
@@ -358,8 +361,8 @@ def main():
             reach = e.get("reach", [])
             rec = e.pop("_record", None)
             if rec and mode == "save":
-                # saved as each harness ends: a run stopped half-way keeps what it proved
-                saved[n] = rec
+                # saved as each harness ends, merged into the file as it is now (a run stopped
+                # half-way keeps what it proved; runs of other harnesses side by side keep theirs)
                 save_records(dict(load_records(), **{n: rec}))
             src = {"replayed": " (replayed)", "fresh": " (fresh)   "}.get(
                 e.get("coverage_source"), "")
@@ -388,10 +391,6 @@ def main():
         print(f"PEND {n:28s} not run: {pending[n]}")
         results.append({"function": n, "passed": False, "pending": pending[n], "properties": 0,
                         "failed": 0, "coverage": 0.0, "seconds": 0.0, "cpu_seconds": 0.0})
-    if mode == "save":
-        # merged into the file as it is now, so runs of different harnesses side by side
-        # do not drop each other's records
-        save_records(dict(load_records(), **saved))
     results.sort(key=lambda e: e["function"])
     passed = sum(e["passed"] for e in results)
     replayed = sum(e.get("coverage_source") == "replayed" for e in results)

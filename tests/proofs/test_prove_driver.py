@@ -278,3 +278,25 @@ def test_run_py_flags_a_coverage_run_killed_by_the_timeout(tmp_path, monkeypatch
         codes[target], 1.0, 1.0, "out"))
     e = run.run_one("mt_x", False, str(tmp_path), 5.0, {}, "fresh")
     assert e["passed"] is False and e["timeout"] is True and e["properties"] == 1
+
+
+def test_run_py_saves_records_whole(tmp_path, monkeypatch):
+    """Records are merged into the file as it is now and written whole (renamed into place), so
+    a run stopped while saving, or a run of other harnesses beside it, loses no record."""
+    run = load_run_py()
+    path = str(tmp_path / "records.json")
+    monkeypatch.setattr(run, "RECORD", path)
+    run.save_records({"mt_a": {"key": "1"}})
+    run.save_records(dict(run.load_records(), **{"mt_b": {"key": "2"}}))
+    assert run.load_records() == {"mt_a": {"key": "1"}, "mt_b": {"key": "2"}}
+    assert sorted(os.listdir(tmp_path)) == ["records.json"], "no temporary file is left"
+
+    def broken(*a, **k):
+        raise KeyboardInterrupt("stopped while saving")
+    monkeypatch.setattr(run.json, "dumps", broken)
+    with pytest.raises(KeyboardInterrupt):
+        run.save_records({"mt_c": {"key": "3"}})
+    monkeypatch.undo()
+    with open(path, encoding="utf-8") as f:
+        assert json.load(f) == {"mt_a": {"key": "1"}, "mt_b": {"key": "2"}}, \
+            "a save stopped half-way truncated the records"
