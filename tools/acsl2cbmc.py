@@ -255,6 +255,7 @@ class Program:
         self.logic = []           # list of LogicDef in order
         self.logic_by_name = {}
         self.ghosts = []          # list of (name, CType)
+        self.ghost_arrays = []    # list of (name, element type words, size text)
         self.lemmas = []          # list of (name, expr, where)
         self.skipped = []         # logic declarations over two memory states (WP only)
         self.cvars = {}           # kernel global variables (extern mt_*) -> CType
@@ -845,8 +846,12 @@ class AParser:
                         if t.text != ",":
                             labels.append(t.text)
                     self.take("}")
-                self.take("(")
                 args = []
+                if labels and not self.at("("):
+                    # P{L1, L2} with no parameters
+                    e = ("call", e[1], args, tuple(labels))
+                    continue
+                self.take("(")
                 while not self.at(")"):
                     args.append(self.range_or_expr())
                     if self.at(","):
@@ -1124,6 +1129,12 @@ def parse_logic_block(prog, text, where, is_type):
             while not p.at(";"):
                 words.append(p.take().text)
             p.take(";")
+            if words[-1] == "]" and "[" in words:
+                # a ghost array: `ghost T Name[SIZE];` (SIZE a C constant expression)
+                k = words.index("[")
+                prog.ghost_arrays.append((words[k - 1], " ".join(words[:k - 1]),
+                                          " ".join(words[k + 1:-1])))
+                continue
             name = words[-1]
             ctype = " ".join(words[:-1])
             prog.ghosts.append((name, ctype))
@@ -1493,6 +1504,12 @@ class Translator:
             if ctx.state != 0:
                 return self.term(e[1], ctx)
             return self.term(e[1], ctx.with_state(1))
+        if tag == "index" and self.ghost_array(e[1]):
+            g, et = self.ghost_array(e[1])
+            if e[2][0] == "range":
+                fail(w, f"a range is only allowed in assigns ({self.show(e)})")
+            return self.widen(f"({self.ghost_read(g, ctx)})[{self.index(e[2], ctx)}]",
+                              self.ctype_of_words(et.split(), w))
         if tag in ("arrow", "dot", "index", "deref"):
             lv = self.lval(e, ctx)
             text, t = lv
@@ -1503,6 +1520,19 @@ class Translator:
             return self.widen(self.mem(text, ctx), t)
         if tag == "call":
             name = e[1]
+            if (name not in self.prog.logic_by_name and name in self.prog.macros and
+                    self.prog.macros[name][0] is not None and len(e) == 3):
+                # a function-like C macro of integer arguments (the MT_CALL_* slots): the C
+                # compiler expands it over the translated arguments
+                params = [x for x in self.prog.macros[name][0].strip("()").split(",") if x.strip()]
+                if len(params) != len(e[2]):
+                    fail(w, f"macro {name} takes {len(params)} arguments, got {len(e[2])}")
+                args = []
+                for a in e[2]:
+                    c, lt = self.term(a, ctx)
+                    self.want(lt, "int", a, w)
+                    args.append(c)
+                return f"(({INT128})({name}({', '.join(args)})))", LT("int")
             if name not in self.prog.logic_by_name:
                 fail(w, f"unknown logic function or predicate {name!r}")
             ld = self.prog.logic_by_name[name]
@@ -1637,6 +1667,14 @@ class Translator:
         if lt.ctype.to.kind == "void":
             return f"((void *)((const char *)({p}) {op} (long long)({i})))"
         return f"(({p}) {op} (long long)({i}))"
+
+    def ghost_array(self, e):
+        """(name, element type words) when e names a ghost array, else None."""
+        if e[0] == "id":
+            for g, et, _ in self.prog.ghost_arrays:
+                if g == e[1]:
+                    return g, et
+        return None
 
     def ghost_ctype(self, name):
         for g, gt in self.prog.ghosts:
@@ -2061,6 +2099,19 @@ class Translator:
         w = ctx.where
         if e[0] == "id" and any(g == e[1] for g, _ in self.prog.ghosts):
             return ("ghost", e[1])
+        if e[0] == "index" and self.ghost_array(e[1]):
+            g = e[1][1]
+            if e[2][0] == "range":
+                lo, llo = self.term(e[2][1], ctx)
+                hi, lhi = self.term(e[2][2], ctx)
+                self.want(llo, "int", e[2][1], w)
+                self.want(lhi, "int", e[2][2], w)
+                return ("range", f"(const void *)&({g}[(long long)({lo})])",
+                        f"(({hi}) - ({lo}) + 1)", f"sizeof({g}[0])")
+            return ("one", f"(const void *)&({g}[{self.index(e[2], ctx)}])", f"sizeof({g}[0])")
+        if e[0] == "id" and self.ghost_array(e):
+            g = e[1]
+            return ("one", f"(const void *)&({g}[0])", f"sizeof({g})")
         # find a range index in the lvalue chain
         path = []
         x = e
@@ -2354,6 +2405,8 @@ def gen_logic(prog, tr, incs):
     out.append("/* ghost variables of the kernel specification (proofs/cbmc/lib/ghost.c) */\n")
     for g, gt in prog.ghosts:
         out.append(f"extern {gt} {g};\nextern {gt} mtc_old_{g};\n")
+    for g, gt, n in prog.ghost_arrays:
+        out.append(f"extern {gt} {g}[{n}];\nextern {gt} mtc_old_{g}[{n}];\n")
     out.append("\n/* object kinds of the snapshot registry (frame checks walk fields by type) */\n")
     out.append("enum {\n    MTC_K_BYTES = 0,\n")
     for k, n in enumerate(struct_kinds(prog)):
@@ -2520,6 +2573,14 @@ def gen_contract(prog, tr, fc, kinds):
         frame.append(f"    (void){n};\n")
     if res:
         frame.append("    (void)mtc_result;\n")
+    for g, _, n in prog.ghost_arrays:
+        lab = cstr(f"{name}: assigns ({g})")
+        frame.append(f"    if (mtc_obj == 0) {{\n"
+                     f"        __CPROVER_size_t mtc_k = mtc_nondet_size();\n"
+                     f"        if (mtc_k < (__CPROVER_size_t)({n}) && "
+                     f"!MTC_COVERS(&{g}[mtc_k], sizeof({g}[0])))\n"
+                     f"            __CPROVER_assert({g}[mtc_k] == mtc_old_{g}[mtc_k], {lab});\n"
+                     f"    }}\n")
     frame.append("    if (mtc_obj >= mtc_nobjs) return;\n")
     frame.append("    const mtc_obj_t *mtc_o = &mtc_objs[mtc_obj];\n")
     # One nondeterministic element of the object; a single object (count 1, every struct the
@@ -2600,6 +2661,13 @@ def gen_stub(prog, tr, fc):
     out = [f"/* {where}: contract stub */\n{fc.decl.ret.c(name)}({param_list(fc, False)})\n{{\n"]
     for g, gt in prog.ghosts:
         out.append(f"    {gt} mtc_pre_{g} = {g};\n")
+    # a ghost array's pre-call copy only where an ensures clause names the array
+    ens_text = " ".join(tr.show(c.expr) for c in fc.ensures + [c for b in fc.behaviors
+                                                                 for c in b.ensures])
+    arrays = [(g, gt, n) for g, gt, n in prog.ghost_arrays
+              if re.search(r"\b" + re.escape(g) + r"\b", ens_text)]
+    for g, gt, n in arrays:
+        out.append(f"    {gt} mtc_pre_{g}[{n}];\n    __CPROVER_array_copy(mtc_pre_{g}, {g});\n")
     for c in fc.requires:
         cw = Ctx(tr, f"{where}: requires {c.name()}", 0, env, None, allow_old=False)
         out.append(f"    __CPROVER_assert({tr.pred(c.expr, cw)}, "
@@ -2615,6 +2683,11 @@ def gen_stub(prog, tr, fc):
         if l[0] == "id" and any(g == l[1] for g, _ in prog.ghosts):
             out.append(f"    __CPROVER_havoc_object(&{l[1]});\n")
             assigned.append(l[1])
+        elif l[0] == "index" and tr.ghost_array(l[1]) and l[2][0] != "range":
+            g, et = tr.ghost_array(l[1])
+            cw = Ctx(tr, f"{where}: assigns", 0, env, None, allow_old=False)
+            out.append(f"    {{ {tr.ctype_of_words(et.split(), where).c('mtc_h')}; "
+                       f"__CPROVER_havoc_object(&mtc_h); {g}[{tr.index(l[2], cw)}] = mtc_h; }}\n")
         elif l[0] == "deref" and l[1][0] == "id" and l[1][1] in env:
             pt = env[l[1][1]][1]
             if pt.kind != "ptr":
@@ -2638,6 +2711,8 @@ def gen_stub(prog, tr, fc):
             out.append(f"    if ({bvars[b.name]}) __CPROVER_assume({tr_old.pred(c.expr, cw)});"
                        f" /* {b.name}.{c.name()} */\n")
     for g, _ in prog.ghosts:
+        out.append(f"    (void)mtc_pre_{g};\n")
+    for g, _, _ in arrays:
         out.append(f"    (void)mtc_pre_{g};\n")
     if res:
         out.append("    return mtc_result;\n")
@@ -2738,7 +2813,8 @@ def main(argv=None):
     write("mtc_stubs.c", "".join(stubs))
     write("manifest.json", json.dumps({"functions": results, "stubs": stubbed,
                                        "logic": [ld.name for ld in prog.logic],
-                                       "ghosts": [g for g, _ in prog.ghosts]}, indent=1) + "\n")
+                                       "ghosts": [g for g, _ in prog.ghosts] +
+                                                 [g for g, _, _ in prog.ghost_arrays]}, indent=1) + "\n")
     if not args.quiet:
         tot = 0
         print(f"acsl2cbmc: {len(prog.logic)} logic definitions, {len(prog.ghosts)} ghosts, "

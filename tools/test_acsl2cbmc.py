@@ -137,7 +137,10 @@ def cbmc_failures(goto_srcs, incs, workdir, extra=(), defines=()):
     gb = os.path.join(workdir, "h.goto")
     cc = subprocess.run([os.path.join(BIN, "goto-cc"), "-DCBMC", *defines, "--function", "harness",
                          "-o", gb]
-                        + [f"-I{d}" for d in incs] + goto_srcs, capture_output=True, text=True)
+                        + [f"-I{d}" for d in incs] +
+                        # ghost.c's array sizes (mt_spec.h, which reads mt/config.h)
+                        [f"-I{os.path.join(ROOT, d)}" for d in ("kernel/include", "kernel/spec")] +
+                        goto_srcs, capture_output=True, text=True)
     if cc.returncode != 0:
         raise AssertionError("goto-cc failed:\n" + cc.stdout + cc.stderr)
     r = subprocess.run([os.path.join(BIN, "cbmc"), gb, "--unwind", "3", "--json-ui", *CHECKS,
@@ -467,6 +470,108 @@ void harness(void)
     HALF_U(0x4000000000000000ull) /* MtHalf(2^63): outside the checked signed range */
 }
 """
+
+
+CALLS_H = r"""
+#include <stdint.h>
+#include "mt_spec.h"
+
+/*@ requires slot: slot < MT_CALL_SLOTS;
+    assigns MtCalls[slot];
+    ensures counted: MtCalls[slot] == MtCount64(\old(MtCalls[slot]), 1);
+*/
+void mt_invoke_t(uint32_t slot);
+
+/*@ predicate OthersKept{L1, L2}(integer i) = \forall integer k; 0 <= k < 4 ==> k != i ==>
+        \at(MtCalls[MT_CALL_TASK(k)], L2) == \at(MtCalls[MT_CALL_TASK(k)], L1);
+    predicate NoneCalled{L1, L2} = \forall integer k; 0 <= k < 4 ==>
+        \at(MtCalls[MT_CALL_TASK(k)], L2) == \at(MtCalls[MT_CALL_TASK(k)], L1);
+*/
+
+/*@ requires i < 4;
+    assigns MtCalls[MT_CALL_TASK(0) .. MT_CALL_TASK(3)];
+    behavior run:
+      assumes go != 0;
+      ensures once: MtCalls[MT_CALL_TASK(i)] == MtCount64(\old(MtCalls[MT_CALL_TASK(i)]), 1);
+      ensures others: OthersKept{Pre, Post}(i);
+    behavior idle:
+      assumes go == 0;
+      ensures none: NoneCalled{Pre, Post};
+*/
+void mt_run_one(uint32_t i, uint32_t go);
+"""
+
+CALLS_C = r"""
+#include "mt_calls.h"
+
+void mt_run_one(uint32_t i, uint32_t go)
+{
+    if (go != 0u) {
+        mt_invoke_t(MT_CALL_TASK(i));
+    }
+}
+"""
+
+CALLS_HARNESS = r"""
+#include "mtc_logic.h"
+#include "mt_run_one_contract.h"
+
+void harness(void)
+{
+    uint32_t i = mtc_nondet_u32();
+    uint32_t go = mtc_nondet_u32();
+    mtc_ghosts_nondet();
+    __CPROVER_assume(mtc_pre_mt_run_one(i, go));
+    mtc_snapshot();
+    mt_run_one(i, go);
+    mtc_post_mt_run_one(i, go);
+}
+"""
+
+
+class CallCounts(unittest.TestCase):
+    """Ghost arrays (the call counters MtCalls of kernel/spec/mt_spec.h): read in the pre- and
+    post-state, assigned by element and by range, havocked by a trampoline's stub; function-like
+    slot macros in annotations; a two-state predicate with no parameters."""
+
+    def run_calls(self, header=CALLS_H, impl=CALLS_C):
+        d = os.path.join(WORK, "calls", self.id().split(".")[-1])
+        shutil.rmtree(d, ignore_errors=True)
+        src, out = os.path.join(d, "src"), os.path.join(d, "gen")
+        write(os.path.join(src, "mt_calls.h"), header)
+        write(os.path.join(src, "mt_calls.c"), impl)
+        write(os.path.join(d, "harness.c"), CALLS_HARNESS)
+        incs = [src, os.path.join(ROOT, "kernel", "spec"), os.path.join(ROOT, "kernel", "include")]
+        t = translate([os.path.join(src, "mt_calls.h")], incs, out)
+        self.assertEqual(t.returncode, 0, t.stderr)
+        srcs = [os.path.join(d, "harness.c"), os.path.join(src, "mt_calls.c"),
+                os.path.join(out, "mtc_stubs.c"), os.path.join(LIB, "mtc.c"),
+                os.path.join(LIB, "ghost.c")]
+        return cbmc_failures(srcs, incs + [out, LIB], d)
+
+    def test_passes(self):
+        failed, total = self.run_calls()
+        self.assertEqual(failed, [])
+        self.assertGreater(total, 10)
+
+    def test_missing_call_caught(self):
+        failed, _ = self.run_calls(impl=CALLS_C.replace("        mt_invoke_t(MT_CALL_TASK(i));\n",
+                                                        "        (void)i;\n"))
+        self.assertEqual(failed, ["mt_run_one: ensures run.once"])
+
+    def test_wrong_slot_caught(self):
+        failed, _ = self.run_calls(impl=CALLS_C.replace("MT_CALL_TASK(i)", "MT_CALL_TASK(0)"))
+        self.assertEqual(sorted(failed), ["mt_run_one: ensures run.once",
+                                          "mt_run_one: ensures run.others"])
+
+    def test_call_when_idle_caught(self):
+        failed, _ = self.run_calls(impl=CALLS_C.replace("if (go != 0u)", "if (go != 1u)"))
+        self.assertIn("mt_run_one: ensures idle.none", failed)
+
+    def test_frame_caught(self):
+        failed, _ = self.run_calls(header=CALLS_H.replace(
+            "assigns MtCalls[MT_CALL_TASK(0) .. MT_CALL_TASK(3)];", "assigns MtCalls[MT_CALL_TASK(0)];"))
+        self.assertEqual(failed, ["mt_run_one: assigns (MtCalls)"])
 
 
 class Division(unittest.TestCase):

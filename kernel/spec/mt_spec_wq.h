@@ -74,6 +74,18 @@
             !\at(MtWqQueued(q, t), L1) ==> !\at(MtWqQueued(q, t), L2);
 */
 
+/* Item callbacks called from L1 to L2 (the ghost MtCalls, mt_invoke.h): none, or item s's
+ * once and no other. */
+/*@ predicate MtWqNoneCalled{L1, L2} =
+        \forall integer k; 0 <= k < MT_CFG_WQ_MAX_ITEMS ==>
+            \at(MtCalls[MT_CALL_WORK(k)], L2) == \at(MtCalls[MT_CALL_WORK(k)], L1);
+
+    predicate MtWqCalledOnly{L1, L2}(integer s) =
+        \at(MtCalls[MT_CALL_WORK(s)], L2) == MtCount64(\at(MtCalls[MT_CALL_WORK(s)], L1), 1) &&
+        \forall integer k; 0 <= k < MT_CFG_WQ_MAX_ITEMS ==> k != s ==>
+            \at(MtCalls[MT_CALL_WORK(k)], L2) == \at(MtCalls[MT_CALL_WORK(k)], L1);
+*/
+
 /* The queue's saturating counters (one more, stopping at the type's maximum) and a timer
  * deadline d microseconds after now (stopping at the end of 64-bit time). */
 /*@ logic integer MtWqInc32(integer x) = x < 0xFFFFFFFF ? x + 1 : 0xFFFFFFFF;

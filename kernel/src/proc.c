@@ -92,9 +92,11 @@ mt_status_t mt_proc_register(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg)
 /* Time and count one call of entry i. */
 /*@ requires MtProcSetInv(p);
     requires 0 <= i < p->count;
-    assigns p->procs[i].calls, p->procs[i].max_us, p->procs[i].total_us, MtPortNow;
+    assigns p->procs[i].calls, p->procs[i].max_us, p->procs[i].total_us, MtPortNow,
+            MtCalls[MT_CALL_PROC(i)];
     ensures MtProcSetInv(p);
     ensures MtPortNow >= \old(MtPortNow);
+    ensures called: MtCalls[MT_CALL_PROC(i)] == MtCount64(\old(MtCalls[MT_CALL_PROC(i)]), 1);
     ensures p->procs[i].calls == (\old(p->procs[i].calls) < 0xFFFFFFFF ? \old(p->procs[i].calls) + 1 : \old(p->procs[i].calls));
 */
 static void call_one(mt_proc_set_t *p, uint32_t i)
@@ -103,7 +105,7 @@ static void call_one(mt_proc_set_t *p, uint32_t i)
     uint64_t t0 = mt_port_now_us();
     uint64_t dt;
 
-    mt_invoke(e->fn, e->arg);
+    mt_invoke(e->fn, e->arg, MT_CALL_PROC(i));
     dt = mt_port_now_us() - t0;
     if (e->calls < 0xFFFFFFFFu) {
         e->calls++;
@@ -137,8 +139,13 @@ mt_status_t mt_proc_dispatch(mt_proc_set_t *p)
             p->procs[j].calls == (\at(p->procs[j].calls, LoopEntry) < 0xFFFFFFFF ? \at(p->procs[j].calls, LoopEntry) + 1 : \at(p->procs[j].calls, LoopEntry));
         loop invariant \forall integer j; i <= j < MT_CFG_PROC_MAX ==>
             p->procs[j].calls == \at(p->procs[j].calls, LoopEntry);
+        loop invariant called: \forall integer j; 0 <= j < i ==>
+            MtCalls[MT_CALL_PROC(j)] == MtCount64(\at(MtCalls[MT_CALL_PROC(j)], LoopEntry), 1);
+        loop invariant uncalled: \forall integer j; i <= j < MT_CFG_PROC_MAX ==>
+            MtCalls[MT_CALL_PROC(j)] == \at(MtCalls[MT_CALL_PROC(j)], LoopEntry);
         loop assigns i, p->procs[0 .. MT_CFG_PROC_MAX - 1].calls, p->procs[0 .. MT_CFG_PROC_MAX - 1].max_us,
-                     p->procs[0 .. MT_CFG_PROC_MAX - 1].total_us, MtPortNow;
+                     p->procs[0 .. MT_CFG_PROC_MAX - 1].total_us, MtPortNow,
+                     MtCalls[MT_CALL_PROC(0) .. MT_CALL_PROC(MT_CFG_PROC_MAX - 1)];
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {

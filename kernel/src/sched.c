@@ -292,8 +292,9 @@ static void note_run(mt_sched_t *s, uint32_t i, uint64_t taken_us, uint32_t allo
     requires room: s->st[i].runs < s->tick;
     assigns s->current, s->task_start_us, s->task_allowed_us, MtPortNow,
             s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us,
-            s->st[i].overruns, s->st[i].last_run;
+            s->st[i].overruns, s->st[i].last_run, MtCalls[MT_CALL_TASK(i)];
     ensures s->current == MT_SCHED_IDLE;
+    ensures called: MtCalls[MT_CALL_TASK(i)] == MtCount64(\old(MtCalls[MT_CALL_TASK(i)]), 1);
     ensures s->st[i].runs == \old(s->st[i].runs) + 1;
     ensures s->st[i].last_run == s->tick;
     ensures \result == MtPortNow && \result >= \old(MtPortNow);
@@ -311,7 +312,7 @@ static uint64_t run_task(mt_sched_t *s, uint32_t i, uint32_t allowed_us)
     s->task_allowed_us = allowed_us;
     s->current = (int32_t)i;
     // cppcheck-suppress misra-c2012-11.8 ; D-103 no cast: the const table holds a void * by value
-    mt_invoke(s->tasks[i].fn, s->tasks[i].arg);
+    mt_invoke(s->tasks[i].fn, s->tasks[i].arg, MT_CALL_TASK(i));
     s->current = MT_SCHED_IDLE;
     t1 = mt_port_now_us();
     note_run(s, i, t1 - t0, allowed_us);
@@ -327,6 +328,9 @@ static uint64_t run_task(mt_sched_t *s, uint32_t i, uint32_t allowed_us)
     assigns s->st[i].slips, s->st[i].not_achieved, s->late_in_loop;
     ensures s->st[i].slips == (\old(s->st[i].slips) + (dt / s->st[i].interval - 1) <= 0xFFFFFFFFFFFFFFFF ?
                                \old(s->st[i].slips) + (dt / s->st[i].interval - 1) : 0xFFFFFFFFFFFFFFFF);
+    ensures counted: MtSlipsCounted(s->st[i].slips, \old(s->st[i].slips), dt, s->st[i].interval);
+    ensures late: s->st[i].not_achieved == (dt >= MT_SCHED_SLOWDOWN * s->st[i].interval ?
+        MtSatAdd64(\old(s->st[i].not_achieved), 1) : \old(s->st[i].not_achieved));
     ensures kept: MtSchedKept{Pre, Post}(s);
     ensures others: \forall integer j; 0 <= j < MT_CFG_SCHED_MAX_TASKS ==> j != i ==>
         s->st[j].runs == \old(s->st[j].runs) && s->st[j].last_run == \old(s->st[j].last_run);
@@ -342,6 +346,8 @@ static void note_release(mt_sched_t *s, uint32_t i, uint64_t dt)
         e->slips = mt_add_sat_u64(e->slips, (dt / iv) - 1u);
     }
     //@ assert one_release: dt < 2 * iv ==> dt / iv == 1;
+    //@ assert two_releases: 2 * iv <= dt < 3 * iv ==> dt / iv == 2;
+    //@ assert three_or_more: 3 * iv <= dt ==> dt / iv >= 3;
     if (dt >= ((uint64_t)MT_SCHED_SLOWDOWN * iv)) {
         e->not_achieved = mt_add_sat_u64(e->not_achieved, 1u);
         if (s->late_in_loop < U32_MAX_) {
@@ -366,6 +372,34 @@ static void note_skip(mt_sched_t *s, uint32_t i)
     s->st[i].budget_skips = mt_add_sat_u64(s->st[i].budget_skips, 1u);
 }
 
+/* Serve normal task i, due dt ticks after its last run: count its missed releases and its
+ * lateness, then run it with its budget as the allowance. */
+/*@ requires valid: \valid(s);
+    requires index: i < MT_CFG_SCHED_MAX_TASKS;
+    requires task: \valid_read(s->tasks + i) && s->tasks[i].fn != \null;
+    requires sep: s->ntasks <= MT_CFG_SCHED_MAX_TASKS && \separated(s, s->tasks + (0 .. s->ntasks - 1));
+    requires room: s->st[i].runs < s->tick;
+    requires due: s->st[i].interval >= 1 && s->st[i].last_run <= s->tick &&
+                  dt == s->tick - s->st[i].last_run && dt >= s->st[i].interval;
+    assigns s->current, s->task_start_us, s->task_allowed_us, MtPortNow,
+            s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us,
+            s->st[i].overruns, s->st[i].last_run, s->st[i].slips, s->st[i].not_achieved,
+            s->late_in_loop, MtCalls[MT_CALL_TASK(i)];
+    ensures served: s->st[i].runs == \old(s->st[i].runs) + 1 && s->st[i].last_run == s->tick &&
+        MtCalls[MT_CALL_TASK(i)] == MtCount64(\old(MtCalls[MT_CALL_TASK(i)]), 1) &&
+        MtSlipsCounted(s->st[i].slips, \old(s->st[i].slips), dt, \old(s->st[i].interval)) &&
+        s->st[i].not_achieved == MtLateAfter(\old(s->st[i].not_achieved), dt, \old(s->st[i].interval));
+    ensures s->current == MT_SCHED_IDLE;
+    ensures \result == MtPortNow && \result >= \old(MtPortNow);
+    ensures kept: MtSchedKept{Pre, Post}(s);
+    ensures tick: s->tick == \old(s->tick) && s->run_tick == \old(s->run_tick);
+*/
+static uint64_t serve(mt_sched_t *s, uint32_t i, uint64_t dt)
+{
+    note_release(s, i, dt);
+    return run_task(s, i, s->tasks[i].budget_us);
+}
+
 /* One step of the scan: task i runs if it is fast, or due and its budget fits the time left
  * (avail); returns the time left after it, measured from start (S-9). */
 /*@ requires inv: MtSchedInv(s) && s->run_tick == s->tick;
@@ -373,35 +407,62 @@ static void note_skip(mt_sched_t *s, uint32_t i)
     requires fresh: s->st[i].runs < s->tick;
     requires left: avail <= time_available_us;
     requires start: start <= MtPortNow;
+    requires spent: (integer)time_available_us - avail <= MtPortNow - start;
     assigns s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us, s->st[i].overruns,
             s->st[i].last_run, s->st[i].slips, s->st[i].not_achieved, s->st[i].budget_skips,
-            s->current, s->late_in_loop, s->task_start_us, s->task_allowed_us, MtPortNow;
+            s->current, s->late_in_loop, s->task_start_us, s->task_allowed_us, MtPortNow,
+            MtCalls[MT_CALL_TASK(i)];
     ensures inv: MtSchedInv(s) && s->run_tick == s->tick;
     ensures kept: MtSchedKept{Pre, Post}(s);
     ensures tick: s->tick == \old(s->tick);
     ensures time: MtPortNow >= \old(MtPortNow);
-    ensures others: \forall integer j; 0 <= j < MT_CFG_SCHED_MAX_TASKS ==> j != i ==>
-        s->st[j].runs == \old(s->st[j].runs) && s->st[j].last_run == \old(s->st[j].last_run);
-    ensures once: (s->st[i].runs == \old(s->st[i].runs) && s->st[i].last_run == \old(s->st[i].last_run)) ||
-                  (s->st[i].runs == \old(s->st[i].runs) + 1 && s->st[i].last_run == s->tick);
-    ensures fast: \old(MtTaskFast(s->tasks + i)) ==> s->st[i].runs == \old(s->st[i].runs) + 1;
-    ensures not_due: !\old(MtTaskFast(s->tasks + i)) ==>
-        \old(s->tick - s->st[i].last_run < s->st[i].interval) ==> s->st[i].runs == \old(s->st[i].runs);
-    ensures budget: !\old(MtTaskFast(s->tasks + i)) ==> \old(s->tasks[i].budget_us) > avail ==>
-        s->st[i].runs == \old(s->st[i].runs);
     ensures left: \result <= time_available_us;
     ensures crumb: s->current == \old(s->current) || s->current == MT_SCHED_IDLE;
+    ensures spent: (integer)time_available_us - \result <= MtPortNow - start;
+    ensures shrinks: \result <= avail;
+    ensures kept_if_idle: s->st[i].runs == \old(s->st[i].runs) ==> \result == avail;
+    ensures fast: \old(MtTaskFast(s->tasks + i)) ==>
+        s->st[i].runs == \old(s->st[i].runs) + 1 && s->st[i].last_run == s->tick &&
+        s->st[i].slips == \old(s->st[i].slips) && s->st[i].not_achieved == \old(s->st[i].not_achieved) &&
+        s->st[i].budget_skips == \old(s->st[i].budget_skips) &&
+        MtCalls[MT_CALL_TASK(i)] == MtCount64(\old(MtCalls[MT_CALL_TASK(i)]), 1);
+    ensures idle: !\old(MtTaskFast(s->tasks + i)) ==> !\old(MtTaskDue(s, i)) ==>
+        s->st[i].runs == \old(s->st[i].runs) && s->st[i].last_run == \old(s->st[i].last_run) &&
+        s->st[i].slips == \old(s->st[i].slips) && s->st[i].not_achieved == \old(s->st[i].not_achieved) &&
+        s->st[i].budget_skips == \old(s->st[i].budget_skips) &&
+        MtCalls[MT_CALL_TASK(i)] == \old(MtCalls[MT_CALL_TASK(i)]);
+    ensures served: !\old(MtTaskFast(s->tasks + i)) ==> \old(MtTaskDue(s, i)) ==>
+        s->st[i].runs != \old(s->st[i].runs) ==>
+        s->st[i].runs == \old(s->st[i].runs) + 1 && s->st[i].last_run == s->tick &&
+        s->st[i].budget_skips == \old(s->st[i].budget_skips) &&
+        MtCalls[MT_CALL_TASK(i)] == MtCount64(\old(MtCalls[MT_CALL_TASK(i)]), 1) &&
+        MtSlipsCounted(s->st[i].slips, \old(s->st[i].slips), \old(s->tick - s->st[i].last_run),
+                       \old(s->st[i].interval)) &&
+        s->st[i].not_achieved == MtLateAfter(\old(s->st[i].not_achieved), \old(s->tick - s->st[i].last_run),
+                                             \old(s->st[i].interval)) &&
+        \old(s->tasks[i].budget_us) <= avail;
+    ensures skipped: !\old(MtTaskFast(s->tasks + i)) ==> \old(MtTaskDue(s, i)) ==>
+        s->st[i].runs == \old(s->st[i].runs) ==>
+        s->st[i].last_run == \old(s->st[i].last_run) &&
+        s->st[i].slips == \old(s->st[i].slips) && s->st[i].not_achieved == \old(s->st[i].not_achieved) &&
+        s->st[i].budget_skips == MtSatAdd64(\old(s->st[i].budget_skips), 1) &&
+        MtCalls[MT_CALL_TASK(i)] == \old(MtCalls[MT_CALL_TASK(i)]) && \old(s->tasks[i].budget_us) > avail;
+    ensures others: \forall integer j; 0 <= j < MT_CFG_SCHED_MAX_TASKS ==> j != i ==>
+        s->st[j].interval == \old(s->st[j].interval) && s->st[j].runs == \old(s->st[j].runs) &&
+        s->st[j].last_run == \old(s->st[j].last_run) && s->st[j].slips == \old(s->st[j].slips) &&
+        s->st[j].not_achieved == \old(s->st[j].not_achieved) &&
+        s->st[j].budget_skips == \old(s->st[j].budget_skips) &&
+        MtCalls[MT_CALL_TASK(j)] == \old(MtCalls[MT_CALL_TASK(j)]);
 */
 static uint32_t run_step(mt_sched_t *s, uint32_t i, uint32_t time_available_us, uint64_t start,
                          uint32_t avail)
 {
     const mt_task_t *t = &s->tasks[i];
-    uint32_t allowed;
     uint64_t end;
 
     if (t->priority < MT_SCHED_FAST_PRIO_LIMIT) {
         /* fast task: every tick, whatever is left */
-        allowed = (t->budget_us != 0u) ? t->budget_us : s->period_us;
+        end = run_task(s, i, (t->budget_us != 0u) ? t->budget_us : s->period_us);
     } else {
         uint64_t dt = s->tick - s->st[i].last_run;
         if (dt < s->st[i].interval) {
@@ -414,10 +475,8 @@ static uint32_t run_step(mt_sched_t *s, uint32_t i, uint32_t time_available_us, 
             //@ ghost sched_inv_intro(s);
             return avail;
         }
-        note_release(s, i, dt);
-        allowed = t->budget_us;
+        end = serve(s, i, dt);
     }
-    end = run_task(s, i, allowed);
     //@ assert kept_run: MtSchedKept{Pre, Here}(s);
     //@ ghost sched_inv_intro(s);
     /* S-9: the budget shrinks by the wall time since the scan started, so time between tasks
@@ -430,37 +489,108 @@ uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us)
     uint32_t avail = time_available_us;
     uint64_t start;
     uint32_t i;
+    /* Ghost copies of each task's accounting as its step left it: the scan's invariants state
+     * each task's outcome over these copies, so that a later step's frame goal is one equality
+     * per field (frozen) and no outcome goal carries a chain of memory updates. */
+    //@ ghost uint64_t g_runs[MT_CFG_SCHED_MAX_TASKS];
+    //@ ghost uint64_t g_last[MT_CFG_SCHED_MAX_TASKS];
+    //@ ghost uint64_t g_slips[MT_CFG_SCHED_MAX_TASKS];
+    //@ ghost uint64_t g_late[MT_CFG_SCHED_MAX_TASKS];
+    //@ ghost uint64_t g_skips[MT_CFG_SCHED_MAX_TASKS];
+    //@ ghost long long g_calls[MT_CFG_SCHED_MAX_TASKS];
 
     if (s->run_tick == s->tick) {
         return avail; /* this tick has been run already */
     }
     s->run_tick = s->tick;
     start = mt_port_now_us();
+    //@ assert fresh_all: \forall integer j; 0 <= j < s->ntasks ==> s->st[j].runs < s->tick;
     /*@ loop invariant range: 0 <= i <= \at(s->ntasks, Pre);
         loop invariant kept: MtSchedKept{Pre, Here}(s);
         loop invariant inv: MtSchedInv(s) && s->run_tick == s->tick && s->tick == \at(s->tick, Pre);
         loop invariant avail <= time_available_us;
         loop invariant crumb: s->current == \at(s->current, Pre) || s->current == MT_SCHED_IDLE;
         loop invariant start <= MtPortNow;
+        loop invariant spent: (integer)time_available_us - avail <= MtPortNow - start;
         loop invariant new_tick: \at(s->run_tick, Pre) < s->tick;
         loop invariant todo: \forall integer j; i <= j < MT_CFG_SCHED_MAX_TASKS ==>
-            s->st[j].runs == \at(s->st[j].runs, Pre) && s->st[j].last_run == \at(s->st[j].last_run, Pre);
-        loop invariant done: \forall integer j; 0 <= j < i ==>
-            (s->st[j].runs == \at(s->st[j].runs, Pre) && s->st[j].last_run == \at(s->st[j].last_run, Pre)) ||
-            (s->st[j].runs == \at(s->st[j].runs, Pre) + 1 && s->st[j].last_run == s->tick);
-        loop invariant fast: \forall integer j; 0 <= j < i ==> \at(MtTaskFast(s->tasks + j), Pre) ==>
-            s->st[j].runs == \at(s->st[j].runs, Pre) + 1;
-        loop invariant not_due: \forall integer j; 0 <= j < i ==> !\at(MtTaskFast(s->tasks + j), Pre) ==>
-            \at(s->tick - s->st[j].last_run < s->st[j].interval, Pre) ==>
-            s->st[j].runs == \at(s->st[j].runs, Pre);
-        loop invariant budget: \forall integer j; 0 <= j < i ==> !\at(MtTaskFast(s->tasks + j), Pre) ==>
-            \at(s->tasks[j].budget_us, Pre) > time_available_us ==> s->st[j].runs == \at(s->st[j].runs, Pre);
+            s->st[j].interval == \at(s->st[j].interval, Pre) && s->st[j].runs == \at(s->st[j].runs, Pre) &&
+            s->st[j].last_run == \at(s->st[j].last_run, Pre) && s->st[j].slips == \at(s->st[j].slips, Pre) &&
+            s->st[j].not_achieved == \at(s->st[j].not_achieved, Pre) &&
+            s->st[j].budget_skips == \at(s->st[j].budget_skips, Pre) &&
+            MtCalls[MT_CALL_TASK(j)] == \at(MtCalls[MT_CALL_TASK(j)], Pre);
+        loop invariant fresh: \forall integer j; i <= j < \at(s->ntasks, Pre) ==> s->st[j].runs < s->tick;
+        loop invariant frozen: \forall integer j; 0 <= j < i ==>
+            s->st[j].interval == \at(s->st[j].interval, Pre) &&
+            s->st[j].runs == g_runs[j] && s->st[j].last_run == g_last[j] && s->st[j].slips == g_slips[j] &&
+            s->st[j].not_achieved == g_late[j] && s->st[j].budget_skips == g_skips[j] &&
+            MtCalls[MT_CALL_TASK(j)] == g_calls[j];
+        loop invariant none_yet: (\forall integer j; 0 <= j < i ==> g_runs[j] == \at(s->st[j].runs, Pre)) ==>
+            avail == time_available_us;
+        loop invariant done_fast: \forall integer j; 0 <= j < i ==> \at(MtTaskFast(s->tasks + j), Pre) ==>
+            g_runs[j] == \at(s->st[j].runs, Pre) + 1 && g_last[j] == \at(s->tick, Pre) &&
+            g_slips[j] == \at(s->st[j].slips, Pre) && g_late[j] == \at(s->st[j].not_achieved, Pre) &&
+            g_skips[j] == \at(s->st[j].budget_skips, Pre) &&
+            g_calls[j] == MtCount64(\at(MtCalls[MT_CALL_TASK(j)], Pre), 1);
+        loop invariant done_idle: \forall integer j; 0 <= j < i ==> !\at(MtTaskFast(s->tasks + j), Pre) ==>
+            !\at(MtTaskDue(s, j), Pre) ==>
+            g_runs[j] == \at(s->st[j].runs, Pre) && g_last[j] == \at(s->st[j].last_run, Pre) &&
+            g_slips[j] == \at(s->st[j].slips, Pre) && g_late[j] == \at(s->st[j].not_achieved, Pre) &&
+            g_skips[j] == \at(s->st[j].budget_skips, Pre) && g_calls[j] == \at(MtCalls[MT_CALL_TASK(j)], Pre);
+        loop invariant done_served: \forall integer j; 0 <= j < i ==> !\at(MtTaskFast(s->tasks + j), Pre) ==>
+            \at(MtTaskDue(s, j), Pre) ==> g_runs[j] != \at(s->st[j].runs, Pre) ==>
+            g_runs[j] == \at(s->st[j].runs, Pre) + 1 && g_last[j] == \at(s->tick, Pre) &&
+            g_skips[j] == \at(s->st[j].budget_skips, Pre) &&
+            g_calls[j] == MtCount64(\at(MtCalls[MT_CALL_TASK(j)], Pre), 1) &&
+            MtSlipsCounted(g_slips[j], \at(s->st[j].slips, Pre), \at(s->tick - s->st[j].last_run, Pre),
+                           \at(s->st[j].interval, Pre)) &&
+            g_late[j] == MtLateAfter(\at(s->st[j].not_achieved, Pre), \at(s->tick - s->st[j].last_run, Pre),
+                                     \at(s->st[j].interval, Pre)) &&
+            \at(s->tasks[j].budget_us, Pre) <= time_available_us;
+        loop invariant done_skipped: \forall integer j; 0 <= j < i ==> !\at(MtTaskFast(s->tasks + j), Pre) ==>
+            \at(MtTaskDue(s, j), Pre) ==> g_runs[j] == \at(s->st[j].runs, Pre) ==>
+            g_last[j] == \at(s->st[j].last_run, Pre) &&
+            g_slips[j] == \at(s->st[j].slips, Pre) && g_late[j] == \at(s->st[j].not_achieved, Pre) &&
+            g_skips[j] == MtSatAdd64(\at(s->st[j].budget_skips, Pre), 1) &&
+            g_calls[j] == \at(MtCalls[MT_CALL_TASK(j)], Pre) && \at(s->tasks[j].budget_us, Pre) > avail;
         loop assigns i, avail, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop,
-                     s->task_start_us, s->task_allowed_us, MtPortNow;
+                     s->task_start_us, s->task_allowed_us, MtPortNow,
+                     MtCalls[MT_CALL_TASK(0) .. MT_CALL_TASK(MT_CFG_SCHED_MAX_TASKS - 1)],
+                     g_runs[0 .. MT_CFG_SCHED_MAX_TASKS - 1], g_last[0 .. MT_CFG_SCHED_MAX_TASKS - 1],
+                     g_slips[0 .. MT_CFG_SCHED_MAX_TASKS - 1], g_late[0 .. MT_CFG_SCHED_MAX_TASKS - 1],
+                     g_skips[0 .. MT_CFG_SCHED_MAX_TASKS - 1], g_calls[0 .. MT_CFG_SCHED_MAX_TASKS - 1];
         loop variant \at(s->ntasks, Pre) - i;
     */
     for (i = 0u; i < s->ntasks; i++) {
         avail = run_step(s, i, time_available_us, start, avail);
+        //@ ghost g_runs[i] = s->st[i].runs;
+        //@ ghost g_last[i] = s->st[i].last_run;
+        //@ ghost g_slips[i] = s->st[i].slips;
+        //@ ghost g_late[i] = s->st[i].not_achieved;
+        //@ ghost g_skips[i] = s->st[i].budget_skips;
+        //@ ghost g_calls[i] = MtCalls[MT_CALL_TASK(i)];
     }
+    /*@ assert all_fast: \forall integer j; 0 <= j < s->ntasks ==> \at(MtTaskFast(s->tasks + j), Pre) ==>
+            s->st[j].runs == \at(s->st[j].runs, Pre) + 1 && s->st[j].last_run == s->tick &&
+            s->st[j].slips == \at(s->st[j].slips, Pre) && s->st[j].not_achieved == \at(s->st[j].not_achieved, Pre) &&
+            s->st[j].budget_skips == \at(s->st[j].budget_skips, Pre) &&
+            MtCalls[MT_CALL_TASK(j)] == MtCount64(\at(MtCalls[MT_CALL_TASK(j)], Pre), 1); */
+    /*@ assert all_served: \forall integer j; 0 <= j < s->ntasks ==> !\at(MtTaskFast(s->tasks + j), Pre) ==>
+            \at(MtTaskDue(s, j), Pre) ==> s->st[j].runs != \at(s->st[j].runs, Pre) ==>
+            s->st[j].runs == \at(s->st[j].runs, Pre) + 1 && s->st[j].last_run == s->tick &&
+            s->st[j].budget_skips == \at(s->st[j].budget_skips, Pre) &&
+            MtCalls[MT_CALL_TASK(j)] == MtCount64(\at(MtCalls[MT_CALL_TASK(j)], Pre), 1) &&
+            MtSlipsCounted(s->st[j].slips, \at(s->st[j].slips, Pre), \at(s->tick - s->st[j].last_run, Pre),
+                           \at(s->st[j].interval, Pre)) &&
+            s->st[j].not_achieved == MtLateAfter(\at(s->st[j].not_achieved, Pre),
+                \at(s->tick - s->st[j].last_run, Pre), \at(s->st[j].interval, Pre)) &&
+            \at(s->tasks[j].budget_us, Pre) <= time_available_us; */
+    /*@ assert all_skipped: \forall integer j; 0 <= j < s->ntasks ==> !\at(MtTaskFast(s->tasks + j), Pre) ==>
+            \at(MtTaskDue(s, j), Pre) ==> s->st[j].runs == \at(s->st[j].runs, Pre) ==>
+            s->st[j].last_run == \at(s->st[j].last_run, Pre) &&
+            s->st[j].slips == \at(s->st[j].slips, Pre) && s->st[j].not_achieved == \at(s->st[j].not_achieved, Pre) &&
+            s->st[j].budget_skips == MtSatAdd64(\at(s->st[j].budget_skips, Pre), 1) &&
+            MtCalls[MT_CALL_TASK(j)] == \at(MtCalls[MT_CALL_TASK(j)], Pre) &&
+            \at(s->tasks[j].budget_us, Pre) > avail; */
     return avail;
 }

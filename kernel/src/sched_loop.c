@@ -82,7 +82,7 @@ void mt_sched_loop_once(mt_sched_t *s, mt_sample_wait_fn_t wait, void *ctx)
     uint32_t left;
 
     s->current = MT_SCHED_WAIT_SAMPLE;
-    sample = mt_invoke_u64(wait, ctx);
+    sample = mt_invoke_u64(wait, ctx, MT_CALL_WAIT);
     s->current = MT_SCHED_IDLE;
     mt_sched_note_sample(s, sample);
     mt_sched_tick(s);

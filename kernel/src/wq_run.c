@@ -315,13 +315,15 @@ mt_status_t mt_wq_run_once(mt_wq_t *q)
     arg = q->slot[s].arg;
     mt_port_unlock();
     //@ assert items: MtWqItemsKept{Pre, Here}(q);
-    mt_invoke(fn, arg);
+    mt_invoke(fn, arg, MT_CALL_WORK(s));
+    //@ assert called: s == \at(q->order[q->head], Pre) && MtWqCalledOnly{Pre, Here}(s);
     relock_after_run(q);
     /*@ ghost Relocked: ; */
     //@ assert items: MtWqItemsKept{Pre, Here}(q);
     finish_i(q);
     mt_port_unlock();
     //@ assert items: MtWqItemsKept{Relocked, Here}(q);
+    //@ assert called_kept: MtWqCalledOnly{Pre, Here}(s);
     return MT_OK;
 }
 
@@ -331,7 +333,8 @@ uint32_t mt_wq_run_pending(mt_wq_t *q, uint32_t max)
 
     /*@ loop invariant bound: 0 <= n <= max;
         loop invariant inv: MtWqInv(q) && MtLocked == 0;
-        loop assigns n, *q, MtPortNow, MtLocked;
+        loop assigns n, *q, MtPortNow, MtLocked,
+                     MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
         loop variant max - n;
     */
     while (n < max) {
@@ -397,7 +400,8 @@ void mt_wq_thread_body(void *arg)
 
     /* The queue's thread: no loop variant, it serves until a stop is requested. */
     /*@ loop invariant inv: MtWqInv(q) && MtLocked == 0;
-        loop assigns *q, MtPortNow, MtPortHandoffs, MtLocked;
+        loop assigns *q, MtPortNow, MtPortHandoffs, MtLocked,
+                     MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     */
     while (mt_wq_serve_once(q) == MT_OK) {
     }

@@ -125,11 +125,14 @@ mt_status_t mt_proc_register(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg);
 /*@ requires inv: MtProcSetInv(p);
     assigns p->procs[0 .. MT_CFG_PROC_MAX - 1].calls, p->procs[0 .. MT_CFG_PROC_MAX - 1].max_us,
             p->procs[0 .. MT_CFG_PROC_MAX - 1].total_us, p->running, p->refused,
-            p->dispatches, p->max_round_us, MtPortNow;
+            p->dispatches, p->max_round_us, MtPortNow,
+            MtCalls[MT_CALL_PROC(0) .. MT_CALL_PROC(MT_CFG_PROC_MAX - 1)];
     ensures inv: MtProcSetInv(p);
     behavior busy:
       assumes p->running == 1;
       ensures status: \result == MT_E_BUSY;
+      ensures none_called: \forall integer i; 0 <= i < MT_CFG_PROC_MAX ==>
+          MtCalls[MT_CALL_PROC(i)] == \old(MtCalls[MT_CALL_PROC(i)]);
       ensures counted: p->refused == (\old(p->refused) < 0xFFFFFFFF ? \old(p->refused) + 1 : \old(p->refused));
       ensures still_running: p->running == 1;
     behavior run:
@@ -138,6 +141,10 @@ mt_status_t mt_proc_register(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg);
       ensures idle: p->running == 0;
       ensures each_once: \forall integer i; 0 <= i < p->count ==>
           p->procs[i].calls == (\old(p->procs[i].calls) < 0xFFFFFFFF ? \old(p->procs[i].calls) + 1 : \old(p->procs[i].calls));
+      ensures called_once: \forall integer i; 0 <= i < p->count ==>
+          MtCalls[MT_CALL_PROC(i)] == MtCount64(\old(MtCalls[MT_CALL_PROC(i)]), 1);
+      ensures others_not_called: \forall integer i; p->count <= i < MT_CFG_PROC_MAX ==>
+          MtCalls[MT_CALL_PROC(i)] == \old(MtCalls[MT_CALL_PROC(i)]);
     complete behaviors;
     disjoint behaviors;
 */

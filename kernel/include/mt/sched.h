@@ -224,6 +224,67 @@ typedef struct {
         \valid_read{L2}(\at(s->tasks, L1) + (0 .. \at(s->ntasks, L1) - 1)) ==> MtSchedCore{L2}(s);
 */
 
+/* What one mt_sched_run() did to task i, from L1 (before) to L2 (after).
+ * - Due: a release is waiting (tick - last_run >= interval).
+ * - Ran: one more run stamped with the tick, its body called once (the ghost MtCalls,
+ *   mt_invoke.h), no skip counted. A fast task's run counts no slip and no lateness; a normal
+ *   task's run counts the releases it did not serve as slips, and lateness when it is
+ *   MT_SCHED_SLOWDOWN or more intervals late (MtTaskServed, MtLateAfter). The slips are stated
+ *   exactly up to three intervals late and as at least two beyond (MtSlipsCounted): the exact
+ *   count, floor(dt / interval) - 1, is the contract of the static note_release (WP), and a
+ *   quotient in the scan's loop invariant is more than WP's provers decide (measured).
+ * - Skipped: due but its budget did not fit: one more budget skip, still due, body not called.
+ * - Untouched: none of its accounting moved and its body was not called. */
+/*@ predicate MtTaskDue(mt_sched_t *s, integer i) = s->tick - s->st[i].last_run >= s->st[i].interval;
+
+    logic integer MtSatAdd64(integer x, integer d) =
+        x + d <= 0xFFFFFFFFFFFFFFFF ? x + d : 0xFFFFFFFFFFFFFFFF;
+
+    predicate MtSlipsCounted(integer now, integer before, integer dt, integer iv) =
+        (dt < 2 * iv ==> now == before) &&
+        (2 * iv <= dt < 3 * iv ==> now == MtSatAdd64(before, 1)) &&
+        (3 * iv <= dt ==> now >= MtSatAdd64(before, 2));
+
+    logic integer MtLateAfter(integer late, integer dt, integer iv) =
+        dt >= MT_SCHED_SLOWDOWN * iv ? MtSatAdd64(late, 1) : late;
+
+    predicate MtTaskCalled{L1, L2}(integer i, integer n) =
+        \at(MtCalls[MT_CALL_TASK(i)], L2) == MtCount64(\at(MtCalls[MT_CALL_TASK(i)], L1), n);
+
+    predicate MtTaskRan{L1, L2}(mt_sched_t *s, integer i) =
+        \at(s->st[i].runs, L2) == \at(s->st[i].runs, L1) + 1 &&
+        \at(s->st[i].last_run, L2) == \at(s->tick, L2) &&
+        \at(s->st[i].budget_skips, L2) == \at(s->st[i].budget_skips, L1) && MtTaskCalled{L1, L2}(i, 1);
+
+    predicate MtTaskRanFast{L1, L2}(mt_sched_t *s, integer i) =
+        MtTaskRan{L1, L2}(s, i) && \at(s->st[i].slips, L2) == \at(s->st[i].slips, L1) &&
+        \at(s->st[i].not_achieved, L2) == \at(s->st[i].not_achieved, L1);
+
+    predicate MtTaskServed{L1, L2}(mt_sched_t *s, integer i) =
+        MtTaskRan{L1, L2}(s, i) &&
+        MtSlipsCounted(\at(s->st[i].slips, L2), \at(s->st[i].slips, L1),
+            \at(s->tick - s->st[i].last_run, L1), \at(s->st[i].interval, L1)) &&
+        \at(s->st[i].not_achieved, L2) == MtLateAfter(\at(s->st[i].not_achieved, L1),
+            \at(s->tick - s->st[i].last_run, L1), \at(s->st[i].interval, L1));
+
+    predicate MtTaskSkipped{L1, L2}(mt_sched_t *s, integer i) =
+        \at(s->st[i].runs, L2) == \at(s->st[i].runs, L1) &&
+        \at(s->st[i].last_run, L2) == \at(s->st[i].last_run, L1) &&
+        \at(s->st[i].slips, L2) == \at(s->st[i].slips, L1) &&
+        \at(s->st[i].not_achieved, L2) == \at(s->st[i].not_achieved, L1) &&
+        \at(s->st[i].budget_skips, L2) == MtSatAdd64(\at(s->st[i].budget_skips, L1), 1) &&
+        \at(MtCalls[MT_CALL_TASK(i)], L2) == \at(MtCalls[MT_CALL_TASK(i)], L1);
+
+    predicate MtTaskUntouched{L1, L2}(mt_sched_t *s, integer i) =
+        \at(s->st[i].interval, L2) == \at(s->st[i].interval, L1) &&
+        \at(s->st[i].runs, L2) == \at(s->st[i].runs, L1) &&
+        \at(s->st[i].last_run, L2) == \at(s->st[i].last_run, L1) &&
+        \at(s->st[i].slips, L2) == \at(s->st[i].slips, L1) &&
+        \at(s->st[i].not_achieved, L2) == \at(s->st[i].not_achieved, L1) &&
+        \at(s->st[i].budget_skips, L2) == \at(s->st[i].budget_skips, L1) &&
+        \at(MtCalls[MT_CALL_TASK(i)], L2) == \at(MtCalls[MT_CALL_TASK(i)], L1);
+*/
+
 /** Check entry i of a table (the first problem found for that entry).
  *  @retval MT_OK, MT_E_TASK_FN, MT_E_TASK_RATE, MT_E_TASK_BUDGET, MT_E_TASK_ORDER
  *          (priority below the previous entry's). */
@@ -296,28 +357,31 @@ void mt_sched_tick(mt_sched_t *s);
  *  nothing, so no task runs twice in one tick. */
 /*@ requires inv: MtSchedInv(s);
     assigns s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop, s->run_tick,
-            s->task_start_us, s->task_allowed_us, MtPortNow;
+            s->task_start_us, s->task_allowed_us, MtPortNow,
+            MtCalls[MT_CALL_TASK(0) .. MT_CALL_TASK(MT_CFG_SCHED_MAX_TASKS - 1)];
     ensures inv: MtSchedInv(s);
     ensures idle: \old(s->current) == MT_SCHED_IDLE ==> s->current == MT_SCHED_IDLE;
     ensures crumb: s->current == \old(s->current) || s->current == MT_SCHED_IDLE;
     ensures left: \result <= time_available_us;
     ensures run_tick: s->run_tick == s->tick;
-    ensures once_per_tick: \forall integer i; 0 <= i < s->ntasks ==>
-        s->st[i].runs == \old(s->st[i].runs) || s->st[i].runs == \old(s->st[i].runs) + 1;
-    ensures same_tick_nothing: \old(s->run_tick) == s->tick ==> \forall integer i; 0 <= i < s->ntasks ==>
-        s->st[i].runs == \old(s->st[i].runs);
-    ensures stamped: \forall integer i; 0 <= i < s->ntasks ==>
-        s->st[i].runs != \old(s->st[i].runs) ==> s->st[i].last_run == s->tick;
-    ensures unstamped: \forall integer i; 0 <= i < s->ntasks ==>
-        s->st[i].runs == \old(s->st[i].runs) ==> s->st[i].last_run == \old(s->st[i].last_run);
-    ensures fast_every_tick: \old(s->run_tick) != s->tick ==> \forall integer i; 0 <= i < s->ntasks ==>
-        MtTaskFast(s->tasks + i) ==> s->st[i].runs == \old(s->st[i].runs) + 1;
-    ensures not_due_not_run: \forall integer i; 0 <= i < s->ntasks ==> !MtTaskFast(s->tasks + i) ==>
-        s->tick - \old(s->st[i].last_run) < s->st[i].interval ==> s->st[i].runs == \old(s->st[i].runs);
-    ensures budget_rule: \forall integer i; 0 <= i < s->ntasks ==> !MtTaskFast(s->tasks + i) ==>
-        s->tasks[i].budget_us > time_available_us ==> s->st[i].runs == \old(s->st[i].runs);
     ensures intervals_kept: \forall integer i; 0 <= i < s->ntasks ==>
         s->st[i].interval == \old(s->st[i].interval);
+    ensures once_per_tick: \forall integer i; 0 <= i < s->ntasks ==>
+        s->st[i].runs == \old(s->st[i].runs) || s->st[i].runs == \old(s->st[i].runs) + 1;
+    ensures same_tick_untouched: \old(s->run_tick) == s->tick ==> \result == time_available_us &&
+        \forall integer i; 0 <= i < MT_CFG_SCHED_MAX_TASKS ==> MtTaskUntouched{Pre, Post}(s, i);
+    ensures fast_ran: \old(s->run_tick) != s->tick ==> \forall integer i; 0 <= i < s->ntasks ==>
+        \old(MtTaskFast(s->tasks + i)) ==> MtTaskRanFast{Pre, Post}(s, i);
+    ensures not_due_untouched: \forall integer i; 0 <= i < s->ntasks ==> !\old(MtTaskFast(s->tasks + i)) ==>
+        !\old(MtTaskDue(s, i)) ==> MtTaskUntouched{Pre, Post}(s, i);
+    ensures due_served_or_skipped: \old(s->run_tick) != s->tick ==> \forall integer i; 0 <= i < s->ntasks ==>
+        !\old(MtTaskFast(s->tasks + i)) ==> \old(MtTaskDue(s, i)) ==>
+        (MtTaskServed{Pre, Post}(s, i) && \old(s->tasks[i].budget_us) <= time_available_us) ||
+        (MtTaskSkipped{Pre, Post}(s, i) && \old(s->tasks[i].budget_us) > \result);
+    ensures none_ran_all_left: (\forall integer i; 0 <= i < s->ntasks ==> s->st[i].runs == \old(s->st[i].runs)) ==>
+        \result == time_available_us;
+    ensures unused_untouched: \forall integer i; s->ntasks <= i < MT_CFG_SCHED_MAX_TASKS ==>
+        MtTaskUntouched{Pre, Post}(s, i);
 */
 uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us);
 
@@ -352,10 +416,12 @@ void mt_sched_note_sample(mt_sched_t *s, uint64_t sample_us);
     assigns s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop, s->tick,
             s->run_tick, s->task_start_us, s->task_allowed_us, s->spare_us, s->spare_ticks, s->extra_us,
             s->clean_loops, s->loops, s->loop_total_us, s->loop_min_us, s->loop_max_us,
-            s->long_loops, s->last_sample_us, s->filtered_loop_q8, MtPortNow;
+            s->long_loops, s->last_sample_us, s->filtered_loop_q8, MtPortNow,
+            MtCalls[MT_CALL_TASK(0) .. MT_CALL_TASK(MT_CFG_SCHED_MAX_TASKS - 1)], MtCalls[MT_CALL_WAIT];
     ensures inv: MtSchedInv(s);
     ensures ticked: s->tick == \old(s->tick) + 1;
     ensures idle: s->current == MT_SCHED_IDLE;
+    ensures waited: MtCalls[MT_CALL_WAIT] == MtCount64(\old(MtCalls[MT_CALL_WAIT]), 1);
 */
 void mt_sched_loop_once(mt_sched_t *s, mt_sample_wait_fn_t wait, void *ctx);
 

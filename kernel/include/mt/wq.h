@@ -456,13 +456,14 @@ void mt_wq_timer_proc(void *arg);
  *  @retval MT_E_BUSY another runner's run is in progress (refused, counted). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    assigns *q, MtPortNow, MtLocked;
+    assigns *q, MtPortNow, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     ensures items_kept: MtWqItemsKept{Pre, Post}(q);
     behavior busy:
       assumes q->running != MT_WQ_NONE;
       ensures status: \result == MT_E_BUSY;
+      ensures none_called: MtWqNoneCalled{Pre, Post};
       ensures counted: q->refused == MtWqInc32(\old(q->refused));
       ensures still: q->running == \old(q->running) && q->count == \old(q->count);
     behavior empty:
@@ -470,6 +471,7 @@ void mt_wq_timer_proc(void *arg);
       ensures status: \result == MT_E_EMPTY;
       ensures unchanged: q->running == MT_WQ_NONE && q->count == 0 &&
                          q->stats.runs == \old(q->stats.runs);
+      ensures none_called: MtWqNoneCalled{Pre, Post};
     behavior run:
       assumes q->running == MT_WQ_NONE && q->count > 0;
       ensures status: \result == MT_OK;
@@ -479,6 +481,7 @@ void mt_wq_timer_proc(void *arg);
       ensures started: q->slot[\old(q->order[q->head])].stats.starts ==
                        MtWqInc64(\old(q->slot[q->order[q->head]].stats.starts));
       ensures ran_wq: q->stats.runs == MtWqInc64(\old(q->stats.runs));
+      ensures called_once: MtWqCalledOnly{Pre, Post}(\old(q->order[q->head]));
     complete behaviors;
     disjoint behaviors;
 */
@@ -489,7 +492,7 @@ mt_status_t mt_wq_run_once(mt_wq_t *q);
  *  of items run. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    assigns *q, MtPortNow, MtLocked;
+    assigns *q, MtPortNow, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     ensures bounded: \result <= max;
@@ -503,7 +506,7 @@ uint32_t mt_wq_run_pending(mt_wq_t *q, uint32_t max);
  *  @retval MT_E_BUSY another thread already waits on this queue. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    assigns *q, MtPortNow, MtPortHandoffs, MtLocked;
+    assigns *q, MtPortNow, MtPortHandoffs, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     behavior stop:
@@ -522,7 +525,7 @@ mt_status_t mt_wq_serve_once(mt_wq_t *q);
  *  not terminate unless a stop is requested (no loop variant). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv((mt_wq_t *)arg);
-    assigns *((mt_wq_t *)arg), MtPortNow, MtPortHandoffs, MtLocked;
+    assigns *((mt_wq_t *)arg), MtPortNow, MtPortHandoffs, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv((mt_wq_t *)arg);
 */
