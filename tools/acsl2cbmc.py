@@ -51,6 +51,7 @@ stops the tool with an error naming the file, function and construct: no clause 
 """
 
 import argparse
+import hashlib
 import json
 import os
 import re
@@ -2472,6 +2473,27 @@ def param_list(fc, with_result):
     return ", ".join(ps) or "void"
 
 
+def clause_tag(label):
+    """The tag of a post-state clause (label "F: ensures inv" -> inv, "F: ensures ok.status" ->
+    ok_status, "F: complete behaviors a, b" -> complete, "F: disjoint ..." -> disjoint,
+    "F: assigns" -> assigns). A proof folder that sets CLAUSES checks only the clauses it names:
+    its binary is built with -DMTC_CLAUSES -DMTC_CLAUSE_<tag>..., and run.py fails a function
+    whose folders' CLAUSES together leave one of its tags out (assumption B17)."""
+    what = label.split(": ", 1)[1]
+    if what.startswith(("complete ", "disjoint ")):
+        return what.split()[0]
+    if what.startswith("ensures "):
+        what = what[len("ensures "):]
+    return re.sub(r"\W", "_", what)
+
+
+def clause_block(label, code):
+    """code, compiled unless the proof selects clauses (MTC_CLAUSES) and not this one."""
+    tag = clause_tag(label)
+    return (f"#if !defined(MTC_CLAUSES) || defined(MTC_CLAUSE_{tag})\n" + "".join(code) +
+            "#endif\n")
+
+
 def gen_contract(prog, tr, fc, kinds):
     # local names (mtc_j<n>, mtc_<v>_w<n>) count from 0 in each contract header, so a contract
     # added elsewhere leaves this header's text, and the record keys of its proofs, unchanged
@@ -2497,8 +2519,8 @@ def gen_contract(prog, tr, fc, kinds):
     for c in fc.ensures:
         lab = f"{name}: ensures {c.name()}"
         cw = Ctx(tr, f"{where}: ensures {c.name()}", 0, env, res)
-        post.append(f"    /* ensures {c.name()}: {tr.show(c.expr)} */\n")
-        post.append(tr.assert_pred(c.expr, cw, lab, 4))
+        post.append(clause_block(lab, [f"    /* ensures {c.name()}: {tr.show(c.expr)} */\n",
+                                       tr.assert_pred(c.expr, cw, lab, 4)]))
         labels.append(lab)
         stats["ensures"] += 1
     bvars = {}
@@ -2520,8 +2542,8 @@ def gen_contract(prog, tr, fc, kinds):
         for c in b.ensures:
             lab = f"{name}: ensures {b.name}.{c.name()}"
             cw = Ctx(tr, f"{where}: behavior {b.name}: ensures {c.name()}", 0, env, res)
-            post.append(f"        /* ensures {c.name()}: {tr.show(c.expr)} */\n")
-            post.append(tr.assert_pred(c.expr, cw, lab, 8))
+            post.append(clause_block(lab, [f"        /* ensures {c.name()}: {tr.show(c.expr)} */\n",
+                                           tr.assert_pred(c.expr, cw, lab, 8)]))
             labels.append(lab)
             stats["ensures"] += 1
         post.append("    }\n")
@@ -2531,7 +2553,8 @@ def gen_contract(prog, tr, fc, kinds):
             if n not in bvars:
                 fail(where, f"complete behaviors: unknown behavior {n}")
         lab = f"{name}: complete behaviors {', '.join(names)}"
-        post.append(f"    __CPROVER_assert({' || '.join(bvars[n] for n in names)}, {cstr(lab)});\n")
+        post.append(clause_block(lab, [f"    __CPROVER_assert({' || '.join(bvars[n] for n in names)}, "
+                                       f"{cstr(lab)});\n"]))
         labels.append(lab)
         stats["complete"] += 1
     for names in fc.disjoint:
@@ -2540,8 +2563,8 @@ def gen_contract(prog, tr, fc, kinds):
             if n not in bvars:
                 fail(where, f"disjoint behaviors: unknown behavior {n}")
         lab = f"{name}: disjoint behaviors {', '.join(names)}"
-        post.append(f"    __CPROVER_assert({' + '.join(bvars[n] for n in names)} <= 1, "
-                    f"{cstr(lab)});\n")
+        post.append(clause_block(lab, [f"    __CPROVER_assert({' + '.join(bvars[n] for n in names)} "
+                                       f"<= 1, {cstr(lab)});\n"]))
         labels.append(lab)
         stats["disjoint"] += 1
     for b in fc.behaviors:
@@ -2610,14 +2633,16 @@ def gen_contract(prog, tr, fc, kinds):
     frame.append("    default:\n        __CPROVER_assert(0, \"snapshot: unknown object kind\");\n")
     frame.append("    }\n}\n#undef MTC_COVERS\n\n")
 
-    post.append(f"    /* assigns */\n")
+    lab = f"{name}: assigns"
+    code = [f"    /* assigns */\n"]
     for i in range(MTC_MAX_OBJS):
-        post.append(f"    {frame_fn}({', '.join(fargs + [str(i)])});\n")
+        code.append(f"    {frame_fn}({', '.join(fargs + [str(i)])});\n")
     for g, _ in prog.ghosts:
         if g not in ghosts_assigned:
-            post.append(f"    __CPROVER_assert({g} == mtc_old_{g}, "
+            code.append(f"    __CPROVER_assert({g} == mtc_old_{g}, "
                         f"{cstr(name + ': assigns (' + g + ')')});\n")
-    labels.append(f"{name}: assigns")
+    post.append(clause_block(lab, code))
+    labels.append(lab)
 
     helpers = "".join(h + "\n" for h in tr.helpers)
     tr.helpers = []
@@ -2646,6 +2671,23 @@ def gen_contract(prog, tr, fc, kinds):
 
 
 MTC_MAX_OBJS = 6
+
+
+def split_proofs(root):
+    """{proof folder: function} for the CBMC proof folders whose Makefile names the function
+    under proof (FUNCTION = f) apart from the folder's own name."""
+    out = {}
+    base = os.path.join(root, "proofs", "cbmc", "proofs")
+    if not os.path.isdir(base):
+        return out
+    for d in sorted(os.listdir(base)):
+        mk = os.path.join(base, d, "Makefile")
+        if os.path.exists(mk):
+            with open(mk, encoding="utf-8") as f:
+                m = re.search(r"^FUNCTION\s*=\s*(\w+)\s*$", f.read(), re.M)
+            if m and m.group(1) != d:
+                out[d] = m.group(1)
+    return out
 STUB_PREFIXES = ("mt_port_", "mt_invoke", "mt_mission_invoke", "mt_bus_invoke", "mt_seq_recheck")
 STUB_SKIP = ("mt_port_halt",)   # hand-written: reaching it is an error (assert(0))
 
@@ -2784,7 +2826,8 @@ def main(argv=None):
             text, stats, labels = gen_contract(prog, tr, fc, kinds)
             texts[fname] = text
             results[fname] = {"file": rel(fc.file), "line": fc.line, "static": fc.decl.static,
-                              "stats": stats, "labels": labels}
+                              "stats": stats, "labels": labels,
+                              "tags": sorted({clause_tag(lab) for lab in labels})}
         stubs = [HEADER_NOTE, '#include "mtc_logic.h"\n\n']
         stubbed = []
         for fname in prog.func_order:
@@ -2811,6 +2854,16 @@ def main(argv=None):
     for fname, text in texts.items():
         write(f"{fname}_contract.h", text)
     write("mtc_stubs.c", "".join(stubs))
+    # A proof folder that checks part of a function's clauses (FUNCTION = that function,
+    # PROOF_UID its own name; run.py) includes the function's contract through its own name.
+    # (A FUNCTION without a contract here gets none: its build fails, and run.py reports it.)
+    for uid, fn_ in split_proofs(root).items():
+        if fn_ not in texts:
+            continue
+        # the digest makes this file change whenever the contract does (make's dependency)
+        digest = hashlib.sha256(texts[fn_].encode()).hexdigest()
+        write(f"{uid}_contract.h", f"{HEADER_NOTE}/* {fn_}_contract.h: sha256 {digest} */\n"
+                                   f"#include \"{fn_}_contract.h\"\n")
     write("manifest.json", json.dumps({"functions": results, "stubs": stubbed,
                                        "logic": [ld.name for ld in prog.logic],
                                        "ghosts": [g for g, _ in prog.ghosts] +

@@ -382,8 +382,12 @@ def check_cbmc_missing(run):
     missing = cb.get("missing_proofs")
     if not isinstance(missing, list):
         return [f"CBMC: no missing_proofs list in {run.path('cbmc')}"]
-    return [f"CBMC: public function {f} has a contract but no harness (proofs/cbmc/proofs/{f}/)"
-            for f in missing]
+    bad = [f"CBMC: public function {f} has a contract but no harness (proofs/cbmc/proofs/{f}/)"
+           for f in missing]
+    unchecked = cb.get("clauses_unchecked")
+    if not isinstance(unchecked, list):
+        return bad + [f"CBMC: no clauses_unchecked list in {run.path('cbmc')}"]
+    return bad + [f"CBMC: contract clause {u}" for u in unchecked]
 
 
 # ------------------------------------------------------------------------------ the others

@@ -449,6 +449,7 @@ def merge_cbmc(out, shards):
     if not planned:
         return []
     seen, results, missing, modes, secs = defaultdict(list), {}, set(), set(), 0.0
+    unchecked = set()
     for sh in shards:
         if not any(u["tool"] == "cbmc" and u["shard"] == sh["shard"] for u in sh["units"]):
             continue
@@ -458,6 +459,7 @@ def merge_cbmc(out, shards):
             seen["cbmc:" + r["function"]].append(sh["shard"])
             results[r["function"]] = r
         missing.update(s.get("missing_proofs") or [])
+        unchecked.update(s.get("clauses_unchecked", ["no clauses_unchecked list in " + p]))
         modes.add(s.get("record_mode", "?"))
         secs += s.get("seconds", 0.0)
     res = [results[n] for n in sorted(results)]
@@ -472,7 +474,7 @@ def merge_cbmc(out, shards):
         "coverage_replayed": count("coverage_source", "replayed"),
         "coverage_fresh": count("coverage_source", "fresh"),
         "tier": "default", "seconds": round(secs, 1), "missing_proofs": sorted(missing),
-        "results": res})
+        "clauses_unchecked": sorted(unchecked), "results": res})
     return unit_problems(planned, seen)
 
 

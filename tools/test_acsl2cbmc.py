@@ -534,7 +534,7 @@ class CallCounts(unittest.TestCase):
     post-state, assigned by element and by range, havocked by a trampoline's stub; function-like
     slot macros in annotations; a two-state predicate with no parameters."""
 
-    def run_calls(self, header=CALLS_H, impl=CALLS_C):
+    def run_calls(self, header=CALLS_H, impl=CALLS_C, defines=()):
         d = os.path.join(WORK, "calls", self.id().split(".")[-1])
         shutil.rmtree(d, ignore_errors=True)
         src, out = os.path.join(d, "src"), os.path.join(d, "gen")
@@ -547,7 +547,7 @@ class CallCounts(unittest.TestCase):
         srcs = [os.path.join(d, "harness.c"), os.path.join(src, "mt_calls.c"),
                 os.path.join(out, "mtc_stubs.c"), os.path.join(LIB, "mtc.c"),
                 os.path.join(LIB, "ghost.c")]
-        return cbmc_failures(srcs, incs + [out, LIB], d)
+        return cbmc_failures(srcs, incs + [out, LIB], d, defines=defines)
 
     def test_passes(self):
         failed, total = self.run_calls()
@@ -572,6 +572,37 @@ class CallCounts(unittest.TestCase):
         failed, _ = self.run_calls(header=CALLS_H.replace(
             "assigns MtCalls[MT_CALL_TASK(0) .. MT_CALL_TASK(3)];", "assigns MtCalls[MT_CALL_TASK(0)];"))
         self.assertEqual(failed, ["mt_run_one: assigns (MtCalls)"])
+
+
+class ClauseSelection(unittest.TestCase):
+    """A proof folder that sets CLAUSES (-DMTC_CLAUSES -DMTC_CLAUSE_<tag>...) checks only the
+    clauses it names (assumption B17; run.py checks that a function's folders together name
+    every clause)."""
+
+    run_calls = CallCounts.run_calls
+
+    def test_only_the_named_clauses_are_checked(self):
+        wrong = CALLS_C.replace("MT_CALL_TASK(i)", "MT_CALL_TASK(0)")
+        sel = ("-DMTC_CLAUSES", "-DMTC_CLAUSE_run_others", "-DMTC_CLAUSE_assigns")
+        failed, _ = self.run_calls(impl=wrong, defines=sel)
+        self.assertEqual(failed, ["mt_run_one: ensures run.others"])
+        failed, _ = self.run_calls(impl=wrong, defines=("-DMTC_CLAUSES", "-DMTC_CLAUSE_run_once"))
+        self.assertEqual(failed, ["mt_run_one: ensures run.once"])
+        # the two selections together are the whole contract's verdict (test_wrong_slot_caught)
+        failed, _ = self.run_calls(impl=wrong, defines=("-DMTC_CLAUSES", "-DMTC_CLAUSE_idle_none"))
+        self.assertEqual(failed, [])
+
+    def test_tags_in_the_manifest(self):
+        d = os.path.join(WORK, "calls", "tags")
+        shutil.rmtree(d, ignore_errors=True)
+        src, out = os.path.join(d, "src"), os.path.join(d, "gen")
+        write(os.path.join(src, "mt_calls.h"), CALLS_H)
+        incs = [src, os.path.join(ROOT, "kernel", "spec"), os.path.join(ROOT, "kernel", "include")]
+        t = translate([os.path.join(src, "mt_calls.h")], incs, out)
+        self.assertEqual(t.returncode, 0, t.stderr)
+        with open(os.path.join(out, "manifest.json")) as f:
+            fn = json.load(f)["functions"]["mt_run_one"]
+        self.assertEqual(fn["tags"], ["assigns", "idle_none", "run_once", "run_others"])
 
 
 class Division(unittest.TestCase):

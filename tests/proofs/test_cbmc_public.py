@@ -38,3 +38,50 @@ def test_every_public_function_has_a_proof_folder():
     declared = RUN.header_functions()
     assert len(declared) >= 100
     assert sorted(declared - set(RUN.proof_names())) == []
+
+
+# ------------------------------------------------------------------------------ split contracts
+
+def folder(tmp_path, name, text):
+    d = tmp_path / name
+    d.mkdir()
+    (d / "Makefile").write_text(text, encoding="utf-8")
+    (d / "cbmc-proof.txt").write_text("", encoding="utf-8")
+
+
+def test_split_folders_must_check_every_clause(tmp_path, monkeypatch):
+    monkeypatch.setattr(RUN, "PROOFS", str(tmp_path))
+    folder(tmp_path, "mt_f", "PROOF_UID = mt_f\nCLAUSES = inv left \\\n    assigns\n")
+    folder(tmp_path, "mt_f__b", "PROOF_UID = mt_f__b\nFUNCTION = mt_f\nCLAUSES = ok_status\n")
+    folder(tmp_path, "mt_g", "PROOF_UID = mt_g\n")
+    functions = {"mt_f": {"tags": ["assigns", "inv", "left", "ok_status", "complete"]},
+                 "mt_g": {"tags": ["assigns"]}}
+    of = {}
+    for n in RUN.proof_names():
+        of.setdefault(RUN.proof_function(n), []).append(n)
+    assert of == {"mt_f": ["mt_f", "mt_f__b"], "mt_g": ["mt_g"]}
+    assert RUN.unchecked_clauses(functions, of) == [
+        "mt_f: complete (checked by no proof folder)"]
+    functions["mt_f"]["tags"].remove("complete")
+    assert RUN.unchecked_clauses(functions, of) == []
+    functions["mt_f"]["tags"].remove("left")  # a CLAUSES name that is no clause: a typo
+    assert RUN.unchecked_clauses(functions, of) == [
+        "mt_f: left (named in CLAUSES, not a clause of the contract)"]
+
+
+def test_the_real_split_folders_check_every_clause(tmp_path):
+    import json
+    import subprocess
+    import sys
+    subprocess.run([sys.executable, os.path.join(ROOT, "tools", "acsl2cbmc.py"), "--root", ROOT,
+                    "--out", str(tmp_path), "--quiet"], check=True)
+    with open(tmp_path / "manifest.json", encoding="utf-8") as f:
+        functions = json.load(f)["functions"]
+    of = {}
+    for n in RUN.proof_names():
+        of.setdefault(RUN.proof_function(n), []).append(n)
+    assert of["mt_sched_run"] == ["mt_sched_run", "mt_sched_run__tasks"]
+    assert RUN.unchecked_clauses(functions, of) == []
+    # the split folder's header includes the function's contract
+    text = (tmp_path / "mt_sched_run__tasks_contract.h").read_text(encoding="utf-8")
+    assert '#include "mt_sched_run_contract.h"' in text

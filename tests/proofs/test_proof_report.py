@@ -61,7 +61,7 @@ def passing_set():
     names = ["mt_ring_write", "mt_sched_add", "mt_sched_tick"]
     cbmc = {"harnesses": 3, "passed": 3, "record_mode": "properties", "properties_fresh": 3,
             "properties_replayed": 0, "coverage_fresh": 0, "coverage_replayed": 3,
-            "tier": "default", "seconds": 6.0, "missing_proofs": [],
+            "tier": "default", "seconds": 6.0, "missing_proofs": [], "clauses_unchecked": [],
             "results": [harness(n) for n in names]}
     tla = {"models": [dict(expected("Ring_ci"), module="Ring", config="cfg/ring.cfg",
                            distinct_states=1234),
@@ -426,6 +426,46 @@ def test_cbmc_pending_harness_fails(proof):
 def test_cbmc_missing_proof_fails(proof):
     proof.edit("cbmc/summary.json", lambda c: c.update(missing_proofs=["mt_bus_publish"]))
     assert_fails(proof.run(), "mt_bus_publish", "no harness")
+
+
+def split_harness(proof, passed):
+    """A second harness of mt_sched_tick, on part of its clauses (B17)."""
+    def change(cb):
+        cb["results"].append(dict(harness("mt_sched_tick__b"), contract="mt_sched_tick",
+                                  passed=passed, failed=0 if passed else 2))
+        cb["harnesses"] += 1
+        cb["passed"] += passed
+    proof.edit("cbmc/summary.json", change)
+
+
+def function_row(proof, fn):
+    with open(os.path.join(proof.proof, "report.md"), encoding="utf-8") as f:
+        return next(line for line in f if line.startswith(f"| sched | {fn} |"))
+
+
+def test_cbmc_split_harnesses_one_row(proof):
+    split_harness(proof, True)
+    assert_passes(proof.run())
+    assert "| pass (2 harnesses) |" in function_row(proof, "mt_sched_tick")
+
+
+def test_cbmc_split_harness_failing_fails_its_function(proof):
+    split_harness(proof, False)
+    assert_fails(proof.run(), "mt_sched_tick__b")
+    row = function_row(proof, "mt_sched_tick")
+    assert "mt_sched_tick: pass" in row and "mt_sched_tick__b: FAIL (2 properties)" in row
+
+
+def test_cbmc_unchecked_clause_fails(proof):
+    # a function split over proof folders (CLAUSES) whose folders leave a clause out
+    proof.edit("cbmc/summary.json", lambda c: c.update(
+        clauses_unchecked=["mt_sched_run: assigns (checked by no proof folder)"]))
+    assert_fails(proof.run(), "contract clause mt_sched_run: assigns", "checked by no proof folder")
+
+
+def test_cbmc_no_unchecked_list_fails(proof):
+    proof.edit("cbmc/summary.json", lambda c: c.pop("clauses_unchecked"))
+    assert_fails(proof.run(), "no clauses_unchecked list")
 
 
 def test_cbmc_no_harness_fails(proof):

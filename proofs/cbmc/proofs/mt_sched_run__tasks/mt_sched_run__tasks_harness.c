@@ -1,0 +1,23 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* CBMC proof: mt_sched_run against the per-task clauses of its ACSL contract (CLAUSES in the
+ * Makefile; kernel/include/mt/sched.h), translated by tools/acsl2cbmc.py into
+ * mt_sched_run_contract.h, included here through mt_sched_run__tasks_contract.h. Shape:
+ * nondeterministic objects, assume the requires, snapshot, call, assert the selected ensures;
+ * MTC_REACH lines are coverage witnesses that the harness admits the extreme values named. */
+#include "mtc_objects.h"
+#include "mt_sched_run__tasks_contract.h"
+
+void harness(void)
+{
+    mt_sched_t *s = mtc_sched(MTC_TASKS_MAX);
+    uint32_t avail = mtc_nondet_u32();
+    mtc_ghosts_nondet();
+
+    __CPROVER_assume(mtc_pre_mt_sched_run(s, avail));
+    mtc_snapshot();
+    uint32_t res = mt_sched_run(s, avail);
+    mtc_post_mt_sched_run(s, avail, res);
+    MTC_REACH(s->ntasks == MTC_TASKS_MAX && s->st[0].runs == s->tick && s->tick > 0xFFFFFFFF00000000ull);
+    MTC_REACH(s->st[2].budget_skips == UINT64_MAX);
+    MTC_REACH(s->st[1].slips == UINT64_MAX && s->st[1].runs == s->tick);
+}
