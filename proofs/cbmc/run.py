@@ -78,11 +78,35 @@ def proof_clauses(name):
     return set(v.split()) if v is not None else None
 
 
+CLAUSE_FLAGS = "-DMTC_CLAUSES $(addprefix -DMTC_CLAUSE_,$(CLAUSES))"
+
+
+def selection_problems(name):
+    """A clause selection must be the one CLAUSES states: the Makefile's CBMC_CFG_EXTRA is
+    exactly CLAUSE_FLAGS when CLAUSES is set, and MTC_CLAUSE appears nowhere else in the folder
+    (a hand-written -DMTC_CLAUSES, or a #define in the harness, would switch clauses off that
+    the coverage check below never sees)."""
+    v = makefile_vars(name)
+    out = []
+    if "CLAUSES" in v and v.get("CBMC_CFG_EXTRA") != CLAUSE_FLAGS:
+        out.append(f"{name}: CLAUSES is set, CBMC_CFG_EXTRA is not {CLAUSE_FLAGS}")
+    d = os.path.join(PROOFS, name)
+    for fn in sorted(os.listdir(d)) if os.path.isdir(d) else []:
+        with open(os.path.join(d, fn), encoding="utf-8", errors="replace") as f:
+            text = f.read()
+        if fn == "Makefile":
+            text = text.replace(CLAUSE_FLAGS, "")
+        if "MTC_CLAUSE" in text:
+            out.append(f"{name}: MTC_CLAUSE in {fn} outside CBMC_CFG_EXTRA = {CLAUSE_FLAGS}")
+    return out
+
+
 def unchecked_clauses(functions, folders_of):
     """Per function, the clause tags (manifest.json "tags") that none of its proof folders
     checks, and the tags a folder names that the contract does not have: ["F: tag (...)"]."""
     out = []
     for fn, folders in sorted(folders_of.items()):
+        out += [p for n in folders for p in selection_problems(n)]
         sels = [proof_clauses(n) for n in folders]
         if any(x is None for x in sels):
             continue

@@ -51,8 +51,10 @@ def folder(tmp_path, name, text):
 
 def test_split_folders_must_check_every_clause(tmp_path, monkeypatch):
     monkeypatch.setattr(RUN, "PROOFS", str(tmp_path))
-    folder(tmp_path, "mt_f", "PROOF_UID = mt_f\nCLAUSES = inv left \\\n    assigns\n")
-    folder(tmp_path, "mt_f__b", "PROOF_UID = mt_f__b\nFUNCTION = mt_f\nCLAUSES = ok_status\n")
+    flags = "CBMC_CFG_EXTRA = -DMTC_CLAUSES $(addprefix -DMTC_CLAUSE_,$(CLAUSES))\n"
+    folder(tmp_path, "mt_f", "PROOF_UID = mt_f\nCLAUSES = inv left \\\n    assigns\n" + flags)
+    folder(tmp_path, "mt_f__b", "PROOF_UID = mt_f__b\nFUNCTION = mt_f\nCLAUSES = ok_status\n"
+           + flags)
     folder(tmp_path, "mt_g", "PROOF_UID = mt_g\n")
     functions = {"mt_f": {"tags": ["assigns", "inv", "left", "ok_status", "complete"]},
                  "mt_g": {"tags": ["assigns"]}}
@@ -67,6 +69,26 @@ def test_split_folders_must_check_every_clause(tmp_path, monkeypatch):
     functions["mt_f"]["tags"].remove("left")  # a CLAUSES name that is no clause: a typo
     assert RUN.unchecked_clauses(functions, of) == [
         "mt_f: left (named in CLAUSES, not a clause of the contract)"]
+
+
+def test_a_selection_outside_clauses_fails(tmp_path, monkeypatch):
+    monkeypatch.setattr(RUN, "PROOFS", str(tmp_path))
+    flags = "CBMC_CFG_EXTRA = -DMTC_CLAUSES $(addprefix -DMTC_CLAUSE_,$(CLAUSES))\n"
+    folder(tmp_path, "mt_f", "PROOF_UID = mt_f\nCLAUSES = inv assigns\n" + flags)
+    folder(tmp_path, "mt_g", "PROOF_UID = mt_g\nCBMC_CFG_EXTRA = -DMTC_CLAUSES -DMTC_CLAUSE_inv\n")
+    folder(tmp_path, "mt_h", "PROOF_UID = mt_h\nCLAUSES = inv\n")
+    folder(tmp_path, "mt_k", "PROOF_UID = mt_k\n")
+    (tmp_path / "mt_k" / "mt_k_harness.c").write_text("#define MTC_CLAUSES\n", encoding="utf-8")
+    functions = {f: {"tags": ["assigns", "inv"]} for f in ("mt_f", "mt_g", "mt_h", "mt_k")}
+    of = {f: [f] for f in functions}
+    assert RUN.unchecked_clauses(functions, of) == [
+        "mt_g: MTC_CLAUSE in Makefile outside CBMC_CFG_EXTRA = -DMTC_CLAUSES "
+        "$(addprefix -DMTC_CLAUSE_,$(CLAUSES))",
+        "mt_h: CLAUSES is set, CBMC_CFG_EXTRA is not -DMTC_CLAUSES "
+        "$(addprefix -DMTC_CLAUSE_,$(CLAUSES))",
+        "mt_h: assigns (checked by no proof folder)",
+        "mt_k: MTC_CLAUSE in mt_k_harness.c outside CBMC_CFG_EXTRA = -DMTC_CLAUSES "
+        "$(addprefix -DMTC_CLAUSE_,$(CLAUSES))"]
 
 
 def test_the_real_split_folders_check_every_clause(tmp_path):
