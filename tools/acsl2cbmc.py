@@ -997,6 +997,7 @@ class LogicDef:
         self.kind, self.name, self.ret, self.params, self.body, self.where = \
             kind, name, ret, params, body, where
         self.labels = tuple(labels)   # two-state definitions: expanded at each use
+        self.abstract = False         # declared in an axiomatic block, no definition
 
 
 def parse_contract(fc, where, is_type):
@@ -1182,6 +1183,29 @@ def parse_logic_block(prog, text, where, is_type):
             ld = LogicDef(kw, name, ret, params, body, f"{where}: {kw} {name}")
             prog.logic.append(ld)
             prog.logic_by_name[name] = ld
+        elif kw == "axiomatic":
+            # `axiomatic Name { predicate P; }`: abstract constants, declared and
+            # never defined (no axiom: the gate would list one). Each is an environment choice
+            # that no function assigns; in the CBMC build it is one nondeterministic value per
+            # run (mtc_abstract_<name> in mtc_stubs.c), the same in every state.
+            p.take()                      # the block's name
+            p.take("{")
+            while not p.at("}"):
+                dk = p.take().text
+                if dk != "predicate":
+                    fail(where, f"unsupported in an axiomatic block: {dk!r} (only parameterless "
+                         "predicate declarations)")
+                ret = None
+                name = p.take().text
+                if not p.at(";"):
+                    fail(where, f"{dk} {name} in an axiomatic block: only a parameterless "
+                         "declaration is translated")
+                p.take(";")
+                ld = LogicDef(dk, name, ret, [], None, f"{where}: {dk} {name} (abstract)")
+                ld.abstract = True
+                prog.logic.append(ld)
+                prog.logic_by_name[name] = ld
+            p.take("}")
         elif kw == "lemma":
             name = p.take().text
             if len(take_labels(p)) > 1:
@@ -1914,16 +1938,18 @@ class Translator:
             pass
         lo = hi = None
         extra = []
+        # The first bound of each side found is the loop's range; any further bound conjunct
+        # (`0 <= d < q && d < n`) stays a guard of the body, so the range is never replaced.
         for c in conj:
             if c[0] == "rel" and len(c[1]) == 5 and c[1][2] == ("id", vname) and \
-                    c[1][1] in ("<=", "<") and c[1][3] in ("<", "<="):
+                    c[1][1] in ("<=", "<") and c[1][3] in ("<", "<=") and lo is None and hi is None:
                 lo = (c[1][0], c[1][1])
                 hi = (c[1][4], c[1][3])
             elif c[0] == "rel" and len(c[1]) == 3 and c[1][0] == ("id", vname) and \
-                    c[1][1] in ("<", "<="):
+                    c[1][1] in ("<", "<=") and hi is None:
                 hi = (c[1][2], c[1][1])
             elif c[0] == "rel" and len(c[1]) == 3 and c[1][2] == ("id", vname) and \
-                    c[1][1] in ("<=", "<"):
+                    c[1][1] in ("<=", "<") and lo is None:
                 lo = (c[1][0], c[1][1])
             else:
                 extra.append(c)
@@ -2416,6 +2442,13 @@ def gen_logic(prog, tr, incs):
     out.append("/* ACSL logic: one C function per predicate / logic function; mtc_st selects the\n"
                " * memory state (0: now, 1: the pre-state snapshot). */\n")
     for ld in prog.logic:
+        if ld.abstract:
+            ret = "int"
+            out.append(f"/* {ld.where}: one value per run, in every state (mtc_stubs.c) */\n"
+                       f"{ret} mtc_abstract_{ld.name}(void);\n"
+                       f"static {ret} mtc_{ld.name}(int mtc_st)\n{{\n"
+                       f"    (void)mtc_st;\n    return mtc_abstract_{ld.name}();\n}}\n\n")
+            continue
         env = {}
         params = ["int mtc_st"]
         for pname, ptype in ld.params:
@@ -2692,6 +2725,16 @@ STUB_PREFIXES = ("mt_port_", "mt_invoke", "mt_mission_invoke", "mt_bus_invoke", 
 STUB_SKIP = ("mt_port_halt",)   # hand-written: reaching it is an error (assert(0))
 
 
+def gen_abstract(ld):
+    """An abstract predicate (axiomatic declaration): chosen once, nondeterministically, on its
+    first read, then the same for the rest of the run."""
+    return (f"/* {ld.where} */\nint mtc_abstract_{ld.name}(void)\n{{\n"
+            f"    static int mtc_chosen;\n    static int mtc_value;\n"
+            f"    if (!mtc_chosen) {{\n        mtc_value = mtc_nondet_bool();\n"
+            f"        mtc_chosen = 1;\n"
+            f"    }}\n    return mtc_value;\n}}\n\n")
+
+
 def gen_stub(prog, tr, fc):
     """Contract stub: assert requires, evaluate behaviour assumptions, havoc the assigns,
     nondet result, assume ensures. \\old is supported for ghost variables and for memory
@@ -2829,6 +2872,7 @@ def main(argv=None):
                               "stats": stats, "labels": labels,
                               "tags": sorted({clause_tag(lab) for lab in labels})}
         stubs = [HEADER_NOTE, '#include "mtc_logic.h"\n\n']
+        stubs.extend(gen_abstract(ld) for ld in prog.logic if ld.abstract)
         stubbed = []
         for fname in prog.func_order:
             fc = prog.functions[fname]
