@@ -20,6 +20,14 @@ says why in `cbmc_accepts`). For each mutant the repository is copied to build/s
   - CBMC runs the harness (`make cbmc-<harness>`, CBMC_RECORD=properties: the property run is
     always made, never replayed): killed when a property fails, accepted when every property
     holds, n/a on a time-out, a build error or without a harness.
+Named clauses. A mutant may name, per tool, the contract clauses it breaks (`clauses`:
+{"wp": [WP property names, e.g. "mt_sub_copy_next_next_ensures_quiet"], "cbmc": [CBMC property
+descriptions, e.g. "mt_sub_copy_next: ensures next.quiet"]}). A tool that names clauses rejects
+the mutant only when one of them fails: a WP goal of that clause not proved, a CBMC property of
+that clause failed. Any other failure (a goal elsewhere, a smoke test, an RTE or frame check)
+is no verdict, so a mutant cannot pass by breaking something else. The summary lists, for every
+mutant, the failed goals and properties and the named ones among them (the per-mutant table);
+a tool of reject_by without named clauses is reported as "no clause named".
 Both tools always run. A mutant is ok when every tool of its reject_by rejected it (judge());
 a tool outside reject_by is reported, its rejection as a bonus, its acceptance is no failure.
 "n/a" is never read as "accepted": a tool of reject_by without a verdict makes the mutant not ok.
@@ -87,6 +95,48 @@ def check_reject_by(reject_by):
     if not isinstance(reject_by, list) or not reject_by or \
             len(set(reject_by)) != len(reject_by) or not set(reject_by) <= set(TOOLS):
         raise ValueError(f"reject_by must be a non-empty subset of {list(TOOLS)}: {reject_by!r}")
+
+
+def check_clauses(m):
+    """`clauses`, when present: {tool: non-empty list of strings} for tools of reject_by."""
+    c = m.get("clauses")
+    if c is None:
+        return
+    if not isinstance(c, dict) or not set(c) <= set(m.get("reject_by", [])) or any(
+            not isinstance(v, list) or not v or not all(isinstance(x, str) and x for x in v)
+            for v in c.values()):
+        raise ValueError(f"clauses must map tools of reject_by to non-empty lists of names: {c!r}")
+
+
+def wp_failed_goals(mod):
+    """WP property names of the goals and smoke tests a gate summary module lists as failed."""
+    out = set()
+    for f in mod.get("failures", []):
+        if ": " in f:
+            out.add(f.split(": ", 1)[1].split(" {", 1)[0].strip())
+    return sorted(out)
+
+
+def cbmc_failed_properties(entry):
+    """Descriptions of the failed CBMC properties of a run.py summary entry."""
+    return sorted({x.get("description") or x.get("property", "?")
+                   for x in entry.get("failures", [])})
+
+
+def clause_verdict(named, failed, what):
+    """(verdict, detail, hits) from the failures of one tool and the clauses named for it.
+
+    named None: any failure rejects (no clause named). Otherwise only a failure of a named
+    clause does; failures elsewhere give no verdict."""
+    if not failed:
+        return False, None, []
+    if named is None:
+        return True, f"{what}: {', '.join(failed[:2])} (no clause named)", []
+    hits = [x for x in failed if x in set(named)]
+    if hits:
+        return True, f"named clause failed: {', '.join(hits[:3])}", hits
+    return None, (f"{what} failed, but none of its named clauses ({', '.join(named)}): "
+                  f"{', '.join(failed[:3])}"), []
 
 
 def rotation(n, k, c):
@@ -219,12 +269,17 @@ def wp_verdict(m, work, open_fns, use_cache):
         return None, "no WP report (the mutant did not parse?)" + (f": {fatal}" if fatal else ""), cache
     open_goals = goals - mod.get("proved", 0)
     open_smoke = smoke - mod.get("smoke_passed", 0)
+    failed = wp_failed_goals(mod)
+    cache["failed"] = failed
     if m["function"] in open_fns:
         return None, "the function has open goals without the mutation", cache
-    if open_goals > 0 or open_smoke > 0 or mod.get("failures"):
-        first = (mod.get("failures") or ["?"])[0]
-        return True, (f"{open_goals}/{goals} goals and {open_smoke}/{smoke} smoke tests not "
-                      f"proved, e.g. {first[:160]}"), cache
+    if open_goals > 0 or open_smoke > 0 or failed:
+        named = (m.get("clauses") or {}).get("wp")
+        v, why, hits = clause_verdict(named, failed or ["?"],
+                                      f"{open_goals}/{goals} goals and {open_smoke}/{smoke} "
+                                      "smoke tests not proved")
+        cache["named_failed"] = hits
+        return v, why, cache
     if mod.get("fatal"):
         fatal = "; ".join(str(x) for x in mod["fatal"])[:200]
         return None, f"every goal proved but the log has errors: {fatal}", cache
@@ -232,15 +287,27 @@ def wp_verdict(m, work, open_fns, use_cache):
 
 
 def cbmc_verdict(m, work):
-    """(verdict, detail) of CBMC's property run on the mutant in work/."""
+    """(verdict, detail, failed property descriptions, named ones among them) of CBMC's
+    property run on the mutant in work/."""
+    v, why, entry = cbmc_run(m, work)
+    if entry is None or not entry.get("failed"):
+        return v, why, [], []
+    failed = cbmc_failed_properties(entry)
+    v, why, hits = clause_verdict((m.get("clauses") or {}).get("cbmc"), failed,
+                                  f"{entry['failed']}/{entry.get('properties', 0)} properties")
+    return v, why, failed, hits
+
+
+def cbmc_run(m, work):
+    """(verdict, detail, summary entry or None) of CBMC's property run on the mutant."""
     harness = harness_of(m)
     if not os.path.exists(os.path.join(work, "proofs", "cbmc", "proofs", harness, "cbmc-proof.txt")):
-        return None, f"no harness proofs/cbmc/proofs/{harness}/"
+        return None, f"no harness proofs/cbmc/proofs/{harness}/", None
     pending_file = os.path.join(work, "proofs", "cbmc", "pending.json")
     if os.path.exists(pending_file):
         with open(pending_file, encoding="utf-8") as f:
             if harness in json.load(f):
-                return None, f"harness {harness} is pending (proofs/cbmc/pending.json)"
+                return None, f"harness {harness} is pending (proofs/cbmc/pending.json)", None
     log = os.path.join(work, "cbmc.log")
     # the property run always runs on the mutant (a recorded verdict is never replayed for it:
     # records hold only passing runs of the unmutated inputs, B10)
@@ -253,20 +320,20 @@ def cbmc_verdict(m, work):
             entry = next((e for e in json.load(f).get("results", [])
                           if e.get("function") == harness), None)
     if entry is None:
-        return None, "no CBMC summary for the harness (see cbmc.log)"
+        return None, "no CBMC summary for the harness (see cbmc.log)", None
     props, failed = entry.get("properties", 0), entry.get("failed", 0)
     if failed:
         names = ", ".join(x.get("property", "?") for x in entry.get("failures", [])[:2])
-        return True, f"{failed}/{props} properties failed ({names})"
+        return True, f"{failed}/{props} properties failed ({names})", entry
     if entry.get("error"):
         err = entry["error"]
         if "timeout: killed" in err:
-            return None, "time-out"
-        return None, "error: " + err.strip().splitlines()[-1][:160]
+            return None, "time-out", entry
+        return None, "error: " + err.strip().splitlines()[-1][:160], entry
     if props == 0:
-        return None, "no property checked"
+        return None, "no property checked", entry
     # a coverage shortfall fails the harness but rejects nothing: the properties all hold
-    return False, f"{props} properties, none failed"
+    return False, f"{props} properties, none failed", entry
 
 
 def run_mutant(m, open_fns, use_cache):
@@ -286,10 +353,19 @@ def run_mutant(m, open_fns, use_cache):
     with open(path, "w", encoding="utf-8") as f:
         f.write(text.replace(m["find"], m["replace"]))
     wp, wp_why, cache = wp_verdict(m, work, open_fns, use_cache)
-    cb, cb_why = cbmc_verdict(m, work)
+    cache = cache or {}
+    wp_failed, wp_hits = cache.pop("failed", []), cache.pop("named_failed", [])
+    cb, cb_why, cb_failed, cb_hits = cbmc_verdict(m, work)
     ok, reason = judge(m["reject_by"], wp, cb, {"wp": wp_why, "cbmc": cb_why})
+    named = m.get("clauses") or {}
+    unnamed = [TOOL_NAME[t] for t in m["reject_by"] if t not in named]
+    if unnamed:
+        reason += f"; no clause named for {' and '.join(unnamed)}"
     return dict(base, applied=True, wp=wp, cbmc=cb, ok=ok, reason=reason, wp_detail=wp_why,
-                cbmc_detail=cb_why, wp_cache=cache, seconds=round(time.time() - t0, 1))
+                cbmc_detail=cb_why, wp_cache=cache, clauses=named, wp_failed=wp_failed,
+                cbmc_failed=cb_failed, wp_named_failed=wp_hits, cbmc_named_failed=cb_hits,
+                clause_named={t: t in named for t in m["reject_by"]},
+                seconds=round(time.time() - t0, 1))
 
 
 def parse_args(argv):
@@ -314,6 +390,7 @@ def main(argv=None):
     for m in mutants:
         try:
             check_reject_by(m.get("reject_by"))
+            check_clauses(m)
         except ValueError as e:
             print(f"prove_selftest: {m.get('id', '?')}: {e}", file=sys.stderr)
             return 2
@@ -354,8 +431,9 @@ def main(argv=None):
     killed = sum(1 for r in results if r["wp"] is True or r["cbmc"] is True)
     by_wp = sum(1 for r in results if r["wp"] is True)
     by_cb = sum(1 for r in results if r["cbmc"] is True)
+    n_named = sum(1 for r in results if r.get("clause_named") and all(r["clause_named"].values()))
     summary = {"mutants": total, "ok": n_ok, "killed": killed, "killed_by_wp": by_wp,
-               "killed_by_cbmc": by_cb, "rotation": rot,
+               "killed_by_cbmc": by_cb, "clauses_named": n_named, "rotation": rot,
                "wp_cache": "none" if args.no_cache else "update",
                "seconds": round(time.time() - t_all, 1), "results": results}
     for d in (os.path.join(ROOT, BUILD, "selftest"), os.path.join(ROOT, BUILD, "proof", "selftest")):
@@ -366,7 +444,13 @@ def main(argv=None):
     for r in results:
         if not r["applied"]:
             print(f"{r['id']}: {r['reason']}")
-    print(f"prove_selftest: {n_ok}/{total} ok; killed {killed}/{total} (WP {by_wp}, CBMC {by_cb}) "
+    print("per-mutant clauses (mutant | WP: named clause failed | CBMC: named clause failed):")
+    for r in results:
+        if r["applied"]:
+            print(f"  {r['id']:4s} | WP: {', '.join(r['wp_named_failed']) or '-'} | "
+                  f"CBMC: {', '.join(r['cbmc_named_failed']) or '-'}")
+    print(f"prove_selftest: {n_ok}/{total} ok; killed {killed}/{total} (WP {by_wp}, CBMC {by_cb}); "
+          f"clauses named for every required tool: {n_named}/{total}; "
           f"in {summary['seconds']:.0f} s")
     return 0 if total > 0 and n_ok == total and all(r["applied"] for r in results) else 1
 

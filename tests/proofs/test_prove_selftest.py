@@ -131,3 +131,62 @@ def test_mutant_find_text_occurs_exactly_once_in_its_file(m):
         text = f.read()
     assert text.count(m["find"]) == 1, f"{m['id']}: find text occurs {text.count(m['find'])} times in {m['file']}"
     assert m["find"] != m["replace"]
+
+
+# --- named clauses ------------------------------------------------------------------------
+
+def test_a_failure_of_a_named_clause_rejects():
+    v, why, hits = ps.clause_verdict(["f_ensures_quiet"], ["f_ensures_quiet", "f_assigns"], "x")
+    assert v is True and hits == ["f_ensures_quiet"] and "f_ensures_quiet" in why
+
+
+def test_a_failure_elsewhere_is_no_verdict_when_clauses_are_named():
+    # the mutant broke something, but not the clause it is meant to break: no rejection
+    v, why, hits = ps.clause_verdict(["f_ensures_quiet"], ["f_assert_rte_mem_access"], "x")
+    assert v is None and hits == [] and "none of its named clauses" in why
+
+
+def test_no_failure_is_an_acceptance_whatever_is_named():
+    assert ps.clause_verdict(["f_ensures_quiet"], [], "x")[0] is False
+    assert ps.clause_verdict(None, [], "x")[0] is False
+
+
+def test_without_named_clauses_any_failure_rejects_and_says_so():
+    v, why, _ = ps.clause_verdict(None, ["f_ensures"], "x")
+    assert v is True and "no clause named" in why
+
+
+def test_failed_goal_names_come_from_the_gate_summary():
+    mod = {"failures": ["put: put_ensures_quiet {'total': 1, 'valid': 0}",
+                        "put: put_wp_smoke_default_requires {'total': 1, 'valid': 0}"]}
+    assert ps.wp_failed_goals(mod) == ["put_ensures_quiet", "put_wp_smoke_default_requires"]
+
+
+def test_failed_properties_are_named_by_their_description():
+    entry = {"failed": 1, "failures": [{"property": "p.1", "description": "f: ensures a.b"}]}
+    assert ps.cbmc_failed_properties(entry) == ["f: ensures a.b"]
+
+
+@pytest.mark.parametrize("bad", [{"wp": []}, {"wp": "x"}, {"smt": ["x"]}, {"cbmc": [""]}, ["x"]])
+def test_malformed_clauses_are_refused(bad):
+    with pytest.raises(ValueError):
+        ps.check_clauses({"reject_by": ["wp"], "clauses": bad})
+
+
+@pytest.mark.parametrize("m", MUTANTS, ids=IDS)
+def test_named_clauses_are_well_formed_and_labelled_in_the_kernel(m):
+    ps.check_clauses(m)
+    kernel = ""
+    for d in ("kernel/include/mt", "kernel/src", "kernel/spec"):
+        for n in sorted(os.listdir(os.path.join(ROOT, d))):
+            with open(os.path.join(ROOT, d, n), encoding="utf-8") as f:
+                kernel += f.read()
+    for name in (m.get("clauses") or {}).get("cbmc", []):
+        # "<function>: ensures <behavior>.<label>": the label is a clause label in the kernel
+        label = name.rsplit(" ", 1)[-1].rsplit(".", 1)[-1]
+        assert f"{label}:" in kernel, f"{m['id']}: no clause labelled {label!r}"
+    for name in (m.get("clauses") or {}).get("wp", []):
+        for kind in ("_ensures_", "_loop_invariant_", "_assert_", "_requires_"):
+            if kind in name:
+                label = name.split(kind, 1)[1]
+                assert f"{label}:" in kernel, f"{m['id']}: no clause labelled {label!r}"
