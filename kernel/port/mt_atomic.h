@@ -20,7 +20,7 @@
 #define MT_ATOMIC_H
 
 #include <stdint.h>
-
+#include "mt_spec.h" /* MtSeqRacing (ACSL only; no line added: CBMC keys, B10) */
 #if defined(__FRAMAC__) || defined(CBMC)
 
 /*@ requires \valid_read(p);
@@ -68,11 +68,12 @@ static inline void mt_seq_stamp_u32(uint32_t *p, uint32_t v)
     *p = v;
 }
 
-/* No body in proof builds: the value may have been changed by another context since the
- * caller's last read, so the result is unconstrained (assumption C3). CBMC uses the stub
- * that tools/acsl2cbmc.py generates from this contract (any value). */
+/* No body in proof builds: with a concurrent writer (MtSeqRacing, mt_spec.h) the stamp may
+ * have changed since the caller's last read; without one it is the stamp the slot holds
+ * (assumption C3). CBMC uses the stub that tools/acsl2cbmc.py generates from this contract. */
 /*@ requires \valid_read(p);
     assigns \nothing;
+    ensures quiet: !MtSeqRacing ==> \result == *p;
 */
 uint32_t mt_seq_recheck_u32(const uint32_t *p);
 

@@ -22,12 +22,18 @@
  *   contract changes it, so "task i ran once" is the postcondition
  *   MtCalls[MT_CALL_TASK(i)] == MtCount64(\old(MtCalls[MT_CALL_TASK(i)]), 1)
  *   (assumption A1).
+ * - MtSeqRacing: holds in a run where a writer in another context may store a seqlock
+ *   slot (a topic's stamp and message bytes, mt/bus.h) while a reader copies that slot
+ *   without the lock. An environment choice: declared, never defined, assigned by no
+ *   function (assumption C3). Without it (the sequential case, every single-context use)
+ *   the stamp re-check reads what the slot holds, and a contract can say that a copy is
+ *   never torn; with it, the re-check may see any newer stamp.
  *
  * The callback slots (MT_CALL_*, used by the trampolines' callers): one per
  * scheduler task, one per timer proc, the sample wait, one per work-queue item
- * (all counted through mt_invoke.h), and, reserved, the mission's command start,
- * verify and done callbacks and one per notifier of a topic (their trampolines,
- * mt_mission_invoke.h and mt_bus_invoke.h, do not count calls yet). A slot is a
+ * (all counted through mt_invoke.h), one per notifier of a topic (counted through
+ * mt_bus_invoke.h), and, reserved, the mission's command start, verify and done
+ * callbacks (their trampoline, mt_mission_invoke.h, does not count calls yet). A slot is a
  * position in its kernel object (task i of the running scheduler, item k of the
  * queue being run), not a global name: contracts compare counts before and
  * after one call.
@@ -53,6 +59,11 @@
 /* long long: no kernel object has a field of that type, so in WP's typed memory model the
  * counters share no memory with kernel state and no frame goal has to separate them. */
 /*@ ghost long long MtCalls[MT_CALL_SLOTS]; */
+
+/*@ axiomatic MtSeqEnvironment {
+      predicate MtSeqRacing;
+    }
+*/
 
 /* A count n steps on from x, wrapping as a 64-bit two's complement counter does (for x a
  * long long and n 0 or 1, the only uses; no division, so that neither WP nor CBMC has to

@@ -55,21 +55,34 @@
         (last + iv > now ? now : (last + iv < now - iv ? now - iv : last + iv));
 */
 
-/* MtTopicBehind: some registered reliable subscriber has not consumed the oldest queued
+/* MtTopicStamped: each of the newest messages still in the queue (as many as were
+ * published, at most qlen) lies in its slot under its generation's stamp, so a copy of it
+ * that no concurrent writer disturbs passes both stamp checks (mt_sub_copy_next).
+ * MtTopicInv: the topic's shape and MtTopicStamped.
+ * MtSubInv: the subscriber's topic is sound and the subscriber is no further behind than
+ * the topic has publications (a saturated count, 2^32 - 1, bounds every distance).
+ * MtTopicBehind: some registered reliable subscriber has not consumed the oldest queued
  * message. */
-/*@ predicate MtTopicInv(mt_topic_t *t) =
+/*@ predicate MtTopicStamped(mt_topic_t *t) =
+        \forall integer d; 0 <= d < t->qlen && d < t->publishes ==>
+            t->stamp[MtSlotBack(t->head, d, t->qlen)] == MtGenBack(t->gen, d);
+
+    predicate MtTopicInv(mt_topic_t *t) =
         \valid(t) &&
         1 <= t->size <= MT_CFG_BUS_MAX_MSG && 1 <= t->qlen <= MT_CFG_BUS_MAX_QUEUE &&
         t->head < t->qlen && t->published <= 1 && t->reliable <= 1 &&
+        (t->published == 0 <==> t->publishes == 0) &&
         t->nnotify <= MT_CFG_BUS_MAX_NOTIFY && t->nrel <= MT_CFG_BUS_MAX_RELIABLE &&
         (t->reliable == 0 ==> t->nrel == 0) &&
         \valid(t->buf + (0 .. t->size * t->qlen - 1)) &&
-        \separated(t, t->buf + (0 .. t->size * t->qlen - 1));
+        \separated(t, t->buf + (0 .. t->size * t->qlen - 1)) &&
+        MtTopicStamped(t);
 
     predicate MtSubInv(mt_sub_t *s) =
         \valid(s) && MtTopicInv(s->topic) && \separated(s, s->topic) &&
         \separated(s, s->topic->buf + (0 .. s->topic->size * s->topic->qlen - 1)) &&
         s->rel <= s->topic->nrel && s->notify <= s->topic->nnotify &&
+        MtGenDist(s->topic->gen, s->gen) <= s->topic->publishes &&
         MtSemInv(&s->sem);
 
     predicate MtTopicBehind(mt_topic_t *t) =
@@ -101,6 +114,76 @@
                        \at(t->rejected, L2) == MtSatInc(\at(t->rejected, L1));
 */
 
+/* A publish's step for registered notifier i, from state L1 to L2 (bus.h, "Notifiers"):
+ * MtNotifyFired  it was called once through its trampoline (MtCalls slot MT_CALL_NOTIFY(i)),
+ *                its call count went up and its last generation is the topic's;
+ * MtNotifyHeld   it was not called and the hold-back was counted;
+ * MtNotifyStep   fired only when its count gate was open and its interval gate open at a
+ *                time no later than L2's clock; held only when the count gate was closed,
+ *                the interval gate closed at L1's clock (so at every later reading), or it
+ *                has no function (never, for one mt_topic_notify_add registered);
+ * MtNotifyKept   untouched: neither called nor counted (its settings are outside every
+ *                publish's assigns). */
+/*@ predicate MtNotifyFired{L1, L2}(mt_topic_t *t, integer i) =
+        \at(t->notify_calls[i], L2) == MtSatInc(\at(t->notify_calls[i], L1)) &&
+        \at(t->notify_gated[i], L2) == \at(t->notify_gated[i], L1) &&
+        \at(t->notify_last_gen[i], L2) == \at(t->gen, L2) &&
+        \at(MtCalls[MT_CALL_NOTIFY(i)], L2) == MtCount64(\at(MtCalls[MT_CALL_NOTIFY(i)], L1), 1);
+
+    predicate MtNotifyHeld{L1, L2}(mt_topic_t *t, integer i) =
+        \at(t->notify_calls[i], L2) == \at(t->notify_calls[i], L1) &&
+        \at(t->notify_gated[i], L2) == MtSatInc(\at(t->notify_gated[i], L1)) &&
+        \at(t->notify_last_gen[i], L2) == \at(t->notify_last_gen[i], L1) &&
+        \at(MtCalls[MT_CALL_NOTIFY(i)], L2) == \at(MtCalls[MT_CALL_NOTIFY(i)], L1);
+
+    predicate MtNotifyStep{L1, L2}(mt_topic_t *t, integer i) =
+        (MtNotifyFired{L1, L2}(t, i) &&
+         MtGenDist(\at(t->gen, L2), \at(t->notify_last_gen[i], L1)) >=
+             \at(t->notify_min_updates[i], L2) &&
+         MtDue(\at(t->notify_last_us[i], L1), \at(t->notify_interval_us[i], L2),
+               \at(MtPortNow, L2))) ||
+        (MtNotifyHeld{L1, L2}(t, i) &&
+         (MtGenDist(\at(t->gen, L2), \at(t->notify_last_gen[i], L1)) <
+              \at(t->notify_min_updates[i], L2) ||
+          !MtDue(\at(t->notify_last_us[i], L1), \at(t->notify_interval_us[i], L2),
+                 \at(MtPortNow, L1)) ||
+          \at(t->notify_fn[i], L2) == \null));
+
+    predicate MtNotifyKept{L1, L2}(mt_topic_t *t, integer i) =
+        \at(t->notify_calls[i], L2) == \at(t->notify_calls[i], L1) &&
+        \at(t->notify_gated[i], L2) == \at(t->notify_gated[i], L1) &&
+        \at(t->notify_last_gen[i], L2) == \at(t->notify_last_gen[i], L1) &&
+        \at(t->notify_last_us[i], L2) == \at(t->notify_last_us[i], L1) &&
+        \at(MtCalls[MT_CALL_NOTIFY(i)], L2) == \at(MtCalls[MT_CALL_NOTIFY(i)], L1);
+*/
+
+/* Lemma (proved by WP): an interval gate open at one time is open at every later time. */
+/*@ lemma MtDueLater: \forall integer last, iv, a, b;
+        a <= b ==> MtDue(last, iv, a) ==> MtDue(last, iv, b);
+*/
+
+/* A refused publish (every form, L1 before the call, L2 after it) calls no notifier and
+ * changes none. (An accepted one takes each registered notifier's step, MtNotifyStep, and
+ * calls no unregistered entry: clauses notified and unused_not_called.) */
+/*@ predicate MtPublishNotifiedNone{L1, L2}(mt_topic_t *t) =
+        \forall integer i; 0 <= i < MT_CFG_BUS_MAX_NOTIFY ==> MtNotifyKept{L1, L2}(t, i);
+*/
+
+/* Lemma (proved by WP): a publish shifts every retained message one place back, in slot
+ * and in generation, and none of them lies in the slot it writes (MtTopicStamped kept). */
+/*@ lemma MtSlotShift: \forall integer h, q, d;
+        1 <= q ==> 0 <= h < q ==> 1 <= d < q ==>
+        MtSlotBack(MtSlotNext(h, q), d, q) == MtSlotBack(h, d - 1, q);
+
+    lemma MtSlotShiftOther: \forall integer h, q, d;
+        1 <= q ==> 0 <= h < q ==> 1 <= d < q ==>
+        MtSlotBack(h, d - 1, q) != MtSlotNext(h, q);
+
+    lemma MtGenShift: \forall integer g, d;
+        0 <= g <= 4294967295 ==> 1 <= d <= 4294967295 ==>
+        MtGenBack(MtGenNext(g), d) == MtGenBack(g, d - 1);
+*/
+
 /* Lemma (ghost function, proved by WP, called only from annotations). */
 /*@ ghost
   /@ requires 0 <= a <= b;
@@ -116,7 +199,7 @@
 /*@ ghost
   /@ requires \valid(t);
      requires 1 <= t->size <= MT_CFG_BUS_MAX_MSG && 1 <= t->qlen <= MT_CFG_BUS_MAX_QUEUE;
-     requires t->head < t->qlen && t->published <= 1 && t->reliable <= 1;
+     requires t->head < t->qlen && t->published == 0 && t->publishes == 0 && t->reliable <= 1;
      requires t->nnotify == 0 && t->nrel == 0;
      requires \valid(t->buf + (0 .. t->size * t->qlen - 1));
      requires \separated(t, t->buf + (0 .. t->size * t->qlen - 1));

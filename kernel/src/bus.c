@@ -269,34 +269,51 @@ static void put(mt_topic_t *t, const uint8_t *msg)
 {
     uint32_t ng = gen_next(t->gen);
     uint32_t nh = slot_next(t->head, t->qlen);
+    uint8_t *dst = mt_bus_slot_ptr(t, nh);
 
     mt_seq_stamp_u32(&t->stamp[nh], ng);
-    write_bytes(mt_bus_slot_ptr(t, nh), msg, t->size);
+    write_bytes(dst, msg, t->size);
     mt_store_release_u32(&t->head, nh);
     mt_store_release_u32(&t->published, 1u);
     mt_store_release_u32(&t->gen, ng);
     t->publishes = mt_inc_sat_u32(t->publishes);
 }
 
-/* Notifier i: pass its gates or count the hold-back. */
+/* Notifier i: pass its gates or count the hold-back (MtNotifyStep of mt_spec_bus.h with
+ * each read spelled out: the provers then see memory reads, which Qed simplifies, rather
+ * than a predicate of two memory states). */
 /*@ requires held: MtLocked == 1;
     requires MtTopicInv(t);
     requires i < t->nnotify;
     assigns t->notify_last_gen[i], t->notify_last_us[i], t->notify_calls[i],
-            t->notify_gated[i], t->notified, MtPortNow;
+            t->notify_gated[i], t->notified, MtPortNow, MtCalls[MT_CALL_NOTIFY(i)];
     ensures MtTopicInv(t);
-    ensures step: (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
-                   t->notify_gated[i] == \old(t->notify_gated[i]) &&
-                   t->notify_last_gen[i] == t->gen &&
-                   MtGenDist(t->gen, \old(t->notify_last_gen[i])) >= t->notify_min_updates[i]) ||
-                  (t->notify_calls[i] == \old(t->notify_calls[i]) &&
-                   t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
-                   t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
+    ensures step:
+        (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
+         t->notify_gated[i] == \old(t->notify_gated[i]) &&
+         t->notify_last_gen[i] == t->gen &&
+         MtCalls[MT_CALL_NOTIFY(i)] == MtCount64(\old(MtCalls[MT_CALL_NOTIFY(i)]), 1) &&
+         MtGenDist(t->gen, \old(t->notify_last_gen[i])) >= t->notify_min_updates[i] &&
+         MtDue(\old(t->notify_last_us[i]), t->notify_interval_us[i], MtPortNow)) ||
+        (t->notify_calls[i] == \old(t->notify_calls[i]) &&
+         t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
+         t->notify_last_gen[i] == \old(t->notify_last_gen[i]) &&
+         MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]) &&
+         (MtGenDist(t->gen, \old(t->notify_last_gen[i])) < t->notify_min_updates[i] ||
+          !MtDue(\old(t->notify_last_us[i]), t->notify_interval_us[i], \old(MtPortNow)) ||
+          t->notify_fn[i] == \null));
+    ensures time: MtPortNow >= \old(MtPortNow);
     ensures gen_kept: t->gen == \old(t->gen);
+    ensures settings_kept: \forall integer j; 0 <= j < MT_CFG_BUS_MAX_NOTIFY ==>
+        t->notify_min_updates[j] == \old(t->notify_min_updates[j]) &&
+        t->notify_interval_us[j] == \old(t->notify_interval_us[j]) &&
+        t->notify_fn[j] == \old(t->notify_fn[j]);
     ensures others: \forall integer j; 0 <= j < MT_CFG_BUS_MAX_NOTIFY && j != i ==>
-        t->notify_last_gen[j] == \old(t->notify_last_gen[j]) &&
         t->notify_calls[j] == \old(t->notify_calls[j]) &&
-        t->notify_gated[j] == \old(t->notify_gated[j]);
+        t->notify_gated[j] == \old(t->notify_gated[j]) &&
+        t->notify_last_gen[j] == \old(t->notify_last_gen[j]) &&
+        t->notify_last_us[j] == \old(t->notify_last_us[j]) &&
+        MtCalls[MT_CALL_NOTIFY(j)] == \old(MtCalls[MT_CALL_NOTIFY(j)]);
 */
 static void notify_one(mt_topic_t *t, uint32_t i)
 {
@@ -320,7 +337,7 @@ static void notify_one(mt_topic_t *t, uint32_t i)
         t->notify_last_gen[i] = t->gen;
         t->notify_calls[i] = mt_inc_sat_u32(t->notify_calls[i]);
         t->notified = mt_inc_sat_u32(t->notified);
-        mt_bus_invoke_notify(t->notify_fn[i], t->notify_arg[i]);
+        mt_bus_invoke_notify(t->notify_fn[i], t->notify_arg[i], MT_CALL_NOTIFY(i));
     } else {
         t->notify_gated[i] = mt_inc_sat_u32(t->notify_gated[i]);
     }
@@ -332,53 +349,98 @@ static void notify_one(mt_topic_t *t, uint32_t i)
     assigns t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow;
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow,
+            MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
     ensures MtTopicInv(t);
     ensures notified: \forall integer i; 0 <= i < t->nnotify ==>
-          (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
-           t->notify_gated[i] == \old(t->notify_gated[i]) && t->notify_last_gen[i] == t->gen &&
-           MtGenDist(t->gen, \old(t->notify_last_gen[i])) >= t->notify_min_updates[i]) ||
-          (t->notify_calls[i] == \old(t->notify_calls[i]) &&
-           t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
-           t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
+        (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
+         t->notify_gated[i] == \old(t->notify_gated[i]) &&
+         t->notify_last_gen[i] == t->gen &&
+         MtCalls[MT_CALL_NOTIFY(i)] == MtCount64(\old(MtCalls[MT_CALL_NOTIFY(i)]), 1) &&
+         MtGenDist(t->gen, \old(t->notify_last_gen[i])) >= t->notify_min_updates[i] &&
+         MtDue(\old(t->notify_last_us[i]), t->notify_interval_us[i], MtPortNow)) ||
+        (t->notify_calls[i] == \old(t->notify_calls[i]) &&
+         t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
+         t->notify_last_gen[i] == \old(t->notify_last_gen[i]) &&
+         MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]) &&
+         (MtGenDist(t->gen, \old(t->notify_last_gen[i])) < t->notify_min_updates[i] ||
+          !MtDue(\old(t->notify_last_us[i]), t->notify_interval_us[i], \old(MtPortNow)) ||
+          t->notify_fn[i] == \null));
+    ensures unused_kept: \forall integer i; t->nnotify <= i < MT_CFG_BUS_MAX_NOTIFY ==>
+        t->notify_calls[i] == \old(t->notify_calls[i]) &&
+        t->notify_gated[i] == \old(t->notify_gated[i]) &&
+        t->notify_last_gen[i] == \old(t->notify_last_gen[i]) &&
+        t->notify_last_us[i] == \old(t->notify_last_us[i]) &&
+        MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]);
+    ensures time: MtPortNow >= \old(MtPortNow);
     ensures kept: t->gen == \old(t->gen) && t->nnotify == \old(t->nnotify) &&
           (\forall integer i; 0 <= i < MT_CFG_BUS_MAX_NOTIFY ==>
-              t->notify_min_updates[i] == \old(t->notify_min_updates[i]));
+              t->notify_min_updates[i] == \old(t->notify_min_updates[i]) &&
+              t->notify_interval_us[i] == \old(t->notify_interval_us[i]) &&
+              t->notify_fn[i] == \old(t->notify_fn[i]));
 */
 static void notify_all(mt_topic_t *t)
 {
     uint32_t n = t->nnotify;
     uint32_t i;
 
-    /*@ loop invariant 0 <= i <= n && n == t->nnotify;
+    /*@ loop invariant 0 <= i <= n && n == t->nnotify && n <= MT_CFG_BUS_MAX_NOTIFY;
         loop invariant MtTopicInv(t);
-        loop invariant done: \forall integer j; 0 <= j < i ==>
-          (t->notify_calls[j] == MtSatInc(\at(t->notify_calls[j], LoopEntry)) &&
-           t->notify_gated[j] == \at(t->notify_gated[j], LoopEntry) && t->notify_last_gen[j] == t->gen &&
-           MtGenDist(t->gen, \at(t->notify_last_gen[j], LoopEntry)) >= t->notify_min_updates[j]) ||
-          (t->notify_calls[j] == \at(t->notify_calls[j], LoopEntry) &&
-           t->notify_gated[j] == MtSatInc(\at(t->notify_gated[j], LoopEntry)) &&
-           t->notify_last_gen[j] == \at(t->notify_last_gen[j], LoopEntry));
+        loop invariant done_fired: \forall integer j; 0 <= j < i ==>
+        MtCalls[MT_CALL_NOTIFY(j)] != \at(MtCalls[MT_CALL_NOTIFY(j)], LoopEntry) ==>
+        t->notify_calls[j] == MtSatInc(\at(t->notify_calls[j], LoopEntry)) &&
+        t->notify_gated[j] == \at(t->notify_gated[j], LoopEntry) &&
+        t->notify_last_gen[j] == t->gen &&
+        MtCalls[MT_CALL_NOTIFY(j)] == MtCount64(\at(MtCalls[MT_CALL_NOTIFY(j)], LoopEntry), 1) &&
+        MtGenDist(t->gen, \at(t->notify_last_gen[j], LoopEntry)) >= t->notify_min_updates[j];
+        loop invariant done_held: \forall integer j; 0 <= j < i ==>
+        MtCalls[MT_CALL_NOTIFY(j)] == \at(MtCalls[MT_CALL_NOTIFY(j)], LoopEntry) ==>
+        t->notify_calls[j] == \at(t->notify_calls[j], LoopEntry) &&
+        t->notify_gated[j] == MtSatInc(\at(t->notify_gated[j], LoopEntry)) &&
+        t->notify_last_gen[j] == \at(t->notify_last_gen[j], LoopEntry) &&
+        (MtGenDist(t->gen, \at(t->notify_last_gen[j], LoopEntry)) < t->notify_min_updates[j] ||
+         !MtDue(\at(t->notify_last_us[j], LoopEntry), t->notify_interval_us[j],
+                \at(MtPortNow, LoopEntry)) ||
+         t->notify_fn[j] == \null);
+        loop invariant done_due: \forall integer j; 0 <= j < i ==>
+        MtCalls[MT_CALL_NOTIFY(j)] != \at(MtCalls[MT_CALL_NOTIFY(j)], LoopEntry) ==>
+        MtDue(\at(t->notify_last_us[j], LoopEntry), t->notify_interval_us[j], MtPortNow);
         loop invariant rest: \forall integer j; i <= j < MT_CFG_BUS_MAX_NOTIFY ==>
-          t->notify_calls[j] == \at(t->notify_calls[j], LoopEntry) &&
-          t->notify_gated[j] == \at(t->notify_gated[j], LoopEntry) &&
-          t->notify_last_gen[j] == \at(t->notify_last_gen[j], LoopEntry);
+        t->notify_calls[j] == \at(t->notify_calls[j], LoopEntry) &&
+        t->notify_gated[j] == \at(t->notify_gated[j], LoopEntry) &&
+        t->notify_last_gen[j] == \at(t->notify_last_gen[j], LoopEntry) &&
+        t->notify_last_us[j] == \at(t->notify_last_us[j], LoopEntry) &&
+        MtCalls[MT_CALL_NOTIFY(j)] == \at(MtCalls[MT_CALL_NOTIFY(j)], LoopEntry);
+        loop invariant time: MtPortNow >= \at(MtPortNow, LoopEntry);
+        loop invariant settings_kept: \forall integer j; 0 <= j < MT_CFG_BUS_MAX_NOTIFY ==>
+        t->notify_min_updates[j] == \at(t->notify_min_updates[j], LoopEntry) &&
+        t->notify_interval_us[j] == \at(t->notify_interval_us[j], LoopEntry) &&
+        t->notify_fn[j] == \at(t->notify_fn[j], LoopEntry);
         loop assigns i, t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow;
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow,
+            MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {
         notify_one(t, i);
         /*@ assert this_one: \let k = i;
-              (t->notify_calls[k] == MtSatInc(\at(t->notify_calls[k], LoopEntry)) &&
-               t->notify_gated[k] == \at(t->notify_gated[k], LoopEntry) &&
-               t->notify_last_gen[k] == t->gen &&
-               MtGenDist(t->gen, \at(t->notify_last_gen[k], LoopEntry)) >= t->notify_min_updates[k]) ||
-              (t->notify_calls[k] == \at(t->notify_calls[k], LoopEntry) &&
-               t->notify_gated[k] == MtSatInc(\at(t->notify_gated[k], LoopEntry)) &&
-               t->notify_last_gen[k] == \at(t->notify_last_gen[k], LoopEntry)); */
+        (t->notify_calls[k] == MtSatInc(\at(t->notify_calls[k], LoopEntry)) &&
+         t->notify_gated[k] == \at(t->notify_gated[k], LoopEntry) &&
+         t->notify_last_gen[k] == t->gen &&
+         MtCalls[MT_CALL_NOTIFY(k)] == MtCount64(\at(MtCalls[MT_CALL_NOTIFY(k)], LoopEntry), 1) &&
+         MtGenDist(t->gen, \at(t->notify_last_gen[k], LoopEntry)) >= t->notify_min_updates[k]) ||
+        (t->notify_calls[k] == \at(t->notify_calls[k], LoopEntry) &&
+         t->notify_gated[k] == MtSatInc(\at(t->notify_gated[k], LoopEntry)) &&
+         t->notify_last_gen[k] == \at(t->notify_last_gen[k], LoopEntry) &&
+         MtCalls[MT_CALL_NOTIFY(k)] == \at(MtCalls[MT_CALL_NOTIFY(k)], LoopEntry) &&
+         (MtGenDist(t->gen, \at(t->notify_last_gen[k], LoopEntry)) < t->notify_min_updates[k] ||
+          !MtDue(\at(t->notify_last_us[k], LoopEntry), t->notify_interval_us[k], \at(MtPortNow, LoopEntry)) ||
+          t->notify_fn[k] == \null)); */
+        /*@ assert this_due: \let k = i;
+              MtCalls[MT_CALL_NOTIFY(k)] != \at(MtCalls[MT_CALL_NOTIFY(k)], LoopEntry) ==>
+              MtDue(\at(t->notify_last_us[k], LoopEntry), t->notify_interval_us[k], MtPortNow); */
     }
 }
 
@@ -395,8 +457,10 @@ mt_status_t mt_topic_publish_i(mt_topic_t *t, const void *msg, uint32_t size)
     put(t, (const uint8_t *)msg);
     /*@ assert notify_kept: \forall integer i; 0 <= i < MT_CFG_BUS_MAX_NOTIFY ==>
             t->notify_last_gen[i] == \at(t->notify_last_gen[i], Pre) &&
+            t->notify_last_us[i] == \at(t->notify_last_us[i], Pre) &&
             t->notify_calls[i] == \at(t->notify_calls[i], Pre) &&
-            t->notify_gated[i] == \at(t->notify_gated[i], Pre); */
+            t->notify_gated[i] == \at(t->notify_gated[i], Pre) &&
+            MtCalls[MT_CALL_NOTIFY(i)] == \at(MtCalls[MT_CALL_NOTIFY(i)], Pre); */
     notify_all(t);
     return MT_OK;
 }

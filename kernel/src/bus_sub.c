@@ -101,7 +101,9 @@ bool mt_sub_updated(const mt_sub_t *s, uint64_t now_us)
 
 /* One copy attempt of the message d before the newest (generation gen, slot head, as
  * loaded by the caller): check the slot's stamp, copy, re-check the stamp. 1: out holds
- * that message whole; 0: the slot held or received another message (retry). */
+ * that message whole; 0: the slot held or received another message (retry). With no
+ * concurrent writer, a retained message (d below the publication count) of the current
+ * generation and head is always copied (MtTopicStamped). */
 /*@ requires MtTopicInv(t);
     requires head < t->qlen && d < t->qlen;
     requires \valid(out + (0 .. t->size - 1));
@@ -111,6 +113,8 @@ bool mt_sub_updated(const mt_sub_t *s, uint64_t now_us)
     ensures \result == 1 ==> \forall integer k; 0 <= k < t->size ==>
         out[k] == t->buf[MtSlotBack(head, d, t->qlen) * t->size + k];
     ensures in_storage: MtSlotBack(head, d, t->qlen) * t->size + t->size <= t->size * t->qlen;
+    ensures quiet: !MtSeqRacing && gen == t->gen && head == t->head && d < t->publishes ==>
+        \result == 1;
 */
 static uint32_t try_copy(const mt_topic_t *t, uint32_t gen, uint32_t head, uint32_t d,
                          uint8_t *out)
@@ -130,6 +134,7 @@ static uint32_t try_copy(const mt_topic_t *t, uint32_t gen, uint32_t head, uint3
  * when fresh; a reliable subscriber publishes its progress (release). */
 /*@ requires MtSubInv(s);
     requires fresh == 0 || fresh == 1;
+    requires closer: MtGenDist(s->topic->gen, g) <= MtGenDist(s->topic->gen, s->gen);
     assigns s->gen, s->missed, s->skipped, s->received,
             s->topic->rel_gen[0 .. MT_CFG_BUS_MAX_RELIABLE - 1];
     ensures MtSubInv(s);
@@ -189,6 +194,7 @@ mt_status_t mt_sub_copy_next(mt_sub_t *s, void *out, uint32_t size, uint64_t now
         loop invariant buf_kept: \forall integer k; 0 <= k < s->topic->size * s->topic->qlen ==>
             s->topic->buf[k] == \at(s->topic->buf[k], Pre);
         loop invariant looked: tries != 0 ==> s->topic->gen != s->gen;
+        loop invariant quiet: !MtSeqRacing ==> tries == 0;
         loop assigns tries, ((uint8_t *)out)[0 .. size - 1];
         loop variant MT_CFG_BUS_COPY_TRIES - tries;
     */
@@ -233,6 +239,7 @@ mt_status_t mt_sub_copy_latest(mt_sub_t *s, void *out, uint32_t size, uint64_t n
         loop invariant s->gen == \at(s->gen, Pre) && s->torn == \at(s->torn, Pre);
         loop invariant buf_kept: \forall integer k; 0 <= k < s->topic->size * s->topic->qlen ==>
             s->topic->buf[k] == \at(s->topic->buf[k], Pre);
+        loop invariant quiet: !MtSeqRacing ==> tries == 0;
         loop assigns tries, ((uint8_t *)out)[0 .. size - 1];
         loop variant MT_CFG_BUS_COPY_TRIES - tries;
     */

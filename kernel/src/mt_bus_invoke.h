@@ -15,13 +15,17 @@
 #include "mt/bus.h"
 #include "mt_spec.h"
 
-/** Call the notifier fn(arg). I-class: kernel lock held. */
+/** Call the notifier fn(arg), the callback of slot `slot` (MT_CALL_NOTIFY(i) for the
+ *  topic's notifier i), and count the call in MtCalls[slot] (mt_spec.h). I-class: kernel
+ *  lock held. */
 /*@ requires held: MtLocked == 1;
     requires callable: fn != \null;
-    assigns MtPortNow;
+    requires slot: slot < MT_CALL_SLOTS;
+    assigns MtPortNow, MtCalls[slot];
     ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
+    ensures counted: MtCalls[slot] == MtCount64(\old(MtCalls[slot]), 1);
 */
-void mt_bus_invoke_notify(mt_bus_notify_fn_t fn, void *arg);
+void mt_bus_invoke_notify(mt_bus_notify_fn_t fn, void *arg, uint32_t slot);
 
 /** The poll notifier (registered by mt_sub_poll_enable, called only through
  *  mt_bus_invoke_notify): mt_sem_signal_i() on the subscriber's semaphore `sem`.

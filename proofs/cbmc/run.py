@@ -79,17 +79,23 @@ def proof_clauses(name):
 
 
 CLAUSE_FLAGS = "-DMTC_CLAUSES $(addprefix -DMTC_CLAUSE_,$(CLAUSES))"
+# What may stand before CLAUSE_FLAGS in a split folder's CBMC_CFG_EXTRA: nothing, or a module's
+# configuration from Makefile.common (the topic bus's small configuration, B7).
+CLAUSE_PREFIXES = ("", "$(BUS_CBMC_CFG) ")
 
 
 def selection_problems(name):
     """A clause selection must be the one CLAUSES states: the Makefile's CBMC_CFG_EXTRA is
-    exactly CLAUSE_FLAGS when CLAUSES is set, and MTC_CLAUSE appears nowhere else in the folder
+    exactly CLAUSE_FLAGS (after one of CLAUSE_PREFIXES) when CLAUSES is set, and MTC_CLAUSE
+    appears nowhere else in the folder
     (a hand-written -DMTC_CLAUSES, or a #define in the harness, would switch clauses off that
     the coverage check below never sees)."""
     v = makefile_vars(name)
     out = []
-    if "CLAUSES" in v and v.get("CBMC_CFG_EXTRA") != CLAUSE_FLAGS:
-        out.append(f"{name}: CLAUSES is set, CBMC_CFG_EXTRA is not {CLAUSE_FLAGS}")
+    if "CLAUSES" in v and v.get("CBMC_CFG_EXTRA") not in [p + CLAUSE_FLAGS
+                                                          for p in CLAUSE_PREFIXES]:
+        out.append(f"{name}: CLAUSES is set, CBMC_CFG_EXTRA is not "
+                   f"[$(BUS_CBMC_CFG) ]{CLAUSE_FLAGS}")
     d = os.path.join(PROOFS, name)
     for fn in sorted(os.listdir(d)) if os.path.isdir(d) else []:
         with open(os.path.join(d, fn), encoding="utf-8", errors="replace") as f:

@@ -79,15 +79,23 @@ def test_a_selection_outside_clauses_fails(tmp_path, monkeypatch):
     folder(tmp_path, "mt_h", "PROOF_UID = mt_h\nCLAUSES = inv\n")
     folder(tmp_path, "mt_k", "PROOF_UID = mt_k\n")
     (tmp_path / "mt_k" / "mt_k_harness.c").write_text("#define MTC_CLAUSES\n", encoding="utf-8")
-    functions = {f: {"tags": ["assigns", "inv"]} for f in ("mt_f", "mt_g", "mt_h", "mt_k")}
+    # the topic bus's configuration may stand before the selection; nothing else may
+    folder(tmp_path, "mt_b", "PROOF_UID = mt_b\nCLAUSES = inv assigns\nCBMC_CFG_EXTRA = "
+           "$(BUS_CBMC_CFG) -DMTC_CLAUSES $(addprefix -DMTC_CLAUSE_,$(CLAUSES))\n")
+    folder(tmp_path, "mt_x", "PROOF_UID = mt_x\nCLAUSES = inv assigns\nCBMC_CFG_EXTRA = "
+           "-DX=1 -DMTC_CLAUSES $(addprefix -DMTC_CLAUSE_,$(CLAUSES))\n")
+    functions = {f: {"tags": ["assigns", "inv"]} for f in ("mt_f", "mt_g", "mt_h", "mt_k",
+                                                           "mt_b", "mt_x")}
     of = {f: [f] for f in functions}
     assert RUN.unchecked_clauses(functions, of) == [
         "mt_g: MTC_CLAUSE in Makefile outside CBMC_CFG_EXTRA = -DMTC_CLAUSES "
         "$(addprefix -DMTC_CLAUSE_,$(CLAUSES))",
-        "mt_h: CLAUSES is set, CBMC_CFG_EXTRA is not -DMTC_CLAUSES "
+        "mt_h: CLAUSES is set, CBMC_CFG_EXTRA is not [$(BUS_CBMC_CFG) ]-DMTC_CLAUSES "
         "$(addprefix -DMTC_CLAUSE_,$(CLAUSES))",
         "mt_h: assigns (checked by no proof folder)",
         "mt_k: MTC_CLAUSE in mt_k_harness.c outside CBMC_CFG_EXTRA = -DMTC_CLAUSES "
+        "$(addprefix -DMTC_CLAUSE_,$(CLAUSES))",
+        "mt_x: CLAUSES is set, CBMC_CFG_EXTRA is not [$(BUS_CBMC_CFG) ]-DMTC_CLAUSES "
         "$(addprefix -DMTC_CLAUSE_,$(CLAUSES))"]
 
 

@@ -28,9 +28,12 @@
  *   message. Why: the alternative (copy under the kernel lock) keeps interrupts
  *   masked for up to MT_CFG_BUS_MAX_MSG bytes per subscriber copy, which is the
  *   interrupt latency uORB pays; here only the publisher's own copy runs with the
- *   lock held. The interleavings are checked by tla/Bus.tla (NoTornRead); the
- *   contracts below are sequential (assumption C2) and leave the outcome of the stamp
- *   re-check free (assumption C3).
+ *   lock held. The interleavings are checked by tla/Bus.tla (NoTornRead). The
+ *   contracts below are sequential (assumption C2) and name the concurrent writer:
+ *   without one (MtSeqRacing false, assumption C3) a copy of a pending message is never
+ *   torn (clauses `quiet`), because every retained message sits in its slot under its
+ *   generation's stamp (MtTopicStamped, part of the topic invariant); with one, a copy may
+ *   be torn at every attempt.
  * - Missed messages, defined: a message is missed by a subscriber when it had left
  *   the queue (was overwritten) before the subscriber read the generation in the
  *   copy that passed over it. copy_next on a subscriber more than queue_len
@@ -50,7 +53,9 @@
  *   once at least min_updates publications happened since its last call) and an
  *   interval gate (interval_us, the rule above); a publish that a gate holds back is
  *   counted in `gated`. There is no timer: a held-back notifier is called by a later
- *   publish. A work queue points fn at its schedule function (uORB's
+ *   publish. Each call is counted in the ghost MtCalls[MT_CALL_NOTIFY(i)], so the publish
+ *   contracts say which notifiers ran (MtNotifyStep, MtPublishNotifiedNone); a refused publish
+ *   calls none. A work queue points fn at its schedule function (uORB's
  *   SubscriptionCallback); mt_sub_poll_enable registers the subscriber's semaphore.
  * - Reliable topics (MT_TOPIC_RELIABLE): a publish that would overwrite a message a
  *   registered reliable subscriber has not consumed is refused with MT_E_BUS_BEHIND
@@ -221,7 +226,8 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
             t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow;
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow,
+            MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
     ensures held: MtLocked == 1;
     ensures inv: MtTopicInv(t);
     behavior msg_size:
@@ -230,12 +236,14 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
       ensures counted: t->rejected == MtSatInc(\old(t->rejected));
       ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
                          t->publishes == \old(t->publishes);
+      ensures none_notified: MtPublishNotifiedNone{Old, Here}(t);
     behavior behind:
       assumes size == t->size && MtTopicBehind(t);
       ensures status: \result == MT_E_BUS_BEHIND;
       ensures counted: t->rejected == MtSatInc(\old(t->rejected));
       ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
                          t->publishes == \old(t->publishes);
+      ensures none_notified: MtPublishNotifiedNone{Old, Here}(t);
     behavior ok:
       assumes size == t->size && !MtTopicBehind(t);
       ensures status: \result == MT_OK;
@@ -250,13 +258,9 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
       ensures published: t->published == 1;
       ensures counted: t->publishes == MtSatInc(\old(t->publishes)) &&
                        t->rejected == \old(t->rejected);
-      ensures notified: \forall integer i; 0 <= i < t->nnotify ==>
-          (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
-           t->notify_gated[i] == \old(t->notify_gated[i]) && t->notify_last_gen[i] == t->gen &&
-           MtGenDist(t->gen, \old(t->notify_last_gen[i])) >= t->notify_min_updates[i]) ||
-          (t->notify_calls[i] == \old(t->notify_calls[i]) &&
-           t->notify_gated[i] == MtSatInc(\old(t->notify_gated[i])) &&
-           t->notify_last_gen[i] == \old(t->notify_last_gen[i]));
+      ensures notified: \forall integer i; 0 <= i < t->nnotify ==> MtNotifyStep{Old, Here}(t, i);
+      ensures unused_not_called: \forall integer i; t->nnotify <= i < MT_CFG_BUS_MAX_NOTIFY ==>
+          MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]);
     complete behaviors;
     disjoint behaviors;
 */
@@ -271,12 +275,19 @@ mt_status_t mt_topic_publish_i(mt_topic_t *t, const void *msg, uint32_t size);
             t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked;
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked,
+            MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtTopicInv(t);
     ensures status: MtPublishStatus(\result);
     ensures generation: MtPublishGeneration{Old, Here}(t, \result);
     ensures refused: MtPublishRefused{Old, Here}(t, \result);
+    ensures notified: \result == MT_OK ==>
+        \forall integer i; 0 <= i < t->nnotify ==> MtNotifyStep{Old, Here}(t, i);
+    ensures unused_not_called: \result == MT_OK ==>
+        \forall integer i; t->nnotify <= i < MT_CFG_BUS_MAX_NOTIFY ==>
+            MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]);
+    ensures none_notified: \result != MT_OK ==> MtPublishNotifiedNone{Old, Here}(t);
 */
 mt_status_t mt_topic_publish(mt_topic_t *t, const void *msg, uint32_t size);
 
@@ -289,12 +300,19 @@ mt_status_t mt_topic_publish(mt_topic_t *t, const void *msg, uint32_t size);
             t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked;
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked,
+            MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtTopicInv(t);
     ensures status: MtPublishStatus(\result);
     ensures generation: MtPublishGeneration{Old, Here}(t, \result);
     ensures refused: MtPublishRefused{Old, Here}(t, \result);
+    ensures notified: \result == MT_OK ==>
+        \forall integer i; 0 <= i < t->nnotify ==> MtNotifyStep{Old, Here}(t, i);
+    ensures unused_not_called: \result == MT_OK ==>
+        \forall integer i; t->nnotify <= i < MT_CFG_BUS_MAX_NOTIFY ==>
+            MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]);
+    ensures none_notified: \result != MT_OK ==> MtPublishNotifiedNone{Old, Here}(t);
 */
 mt_status_t mt_topic_publish_isr(mt_topic_t *t, const void *msg, uint32_t size);
 
@@ -472,9 +490,11 @@ bool mt_sub_updated(const mt_sub_t *s, uint64_t now_us);
               s->topic->size + k]);
       ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
           s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
+      ensures quiet: !MtSeqRacing ==> \result == MT_OK;
     behavior lapped:
       assumes size == s->topic->size && MtSubPending(s) > s->topic->qlen;
       ensures status: \result == MT_W_BUS_MISSED || \result == MT_E_BUS_TORN;
+      ensures quiet: !MtSeqRacing ==> \result == MT_W_BUS_MISSED;
       ensures oldest: \result == MT_W_BUS_MISSED ==>
           s->gen == MtGenBack(s->topic->gen, s->topic->qlen - 1) &&
           s->received == MtSatInc(\old(s->received)) &&
@@ -534,10 +554,12 @@ mt_status_t mt_sub_copy_next(mt_sub_t *s, void *out, uint32_t size, uint64_t now
                                                      s->topic->size + k]);
       ensures torn: \result == MT_E_BUS_TORN ==> s->gen == \old(s->gen) &&
           s->missed == \old(s->missed) && s->torn == MtSatInc(\old(s->torn));
+      ensures quiet: !MtSeqRacing ==> \result == MT_OK;
     behavior lapped:
       assumes size == s->topic->size && s->topic->published == 1 &&
               MtSubPending(s) > s->topic->qlen;
       ensures status: \result == MT_W_BUS_MISSED || \result == MT_E_BUS_TORN;
+      ensures quiet: !MtSeqRacing ==> \result == MT_W_BUS_MISSED;
       ensures newest: \result == MT_W_BUS_MISSED ==> s->gen == s->topic->gen &&
           s->skipped == MtSatAdd(\old(s->skipped), s->topic->qlen - 1) &&
           s->received == MtSatInc(\old(s->received)) &&
