@@ -248,7 +248,8 @@ def open_functions():
 
 
 def wp_verdict(m, work, open_fns, use_cache):
-    """(verdict, detail, cache counts) of WP on the mutant in work/."""
+    """(verdict, detail, cache counts, failed goal names, named ones among them) of WP on the
+    mutant in work/, like cbmc_verdict."""
     wp_dir = os.path.join(WORK_BUILD, "proof", "wp")
     # frama-c exits 0 even with unproved goals: the verdict is read from the gate's summary
     run(["make", "--no-print-directory", f"wp-{m['wp_module']}", f"WP_FCT={m['function']}",
@@ -259,31 +260,30 @@ def wp_verdict(m, work, open_fns, use_cache):
     run(["python3", "proofs/wp/gate.py", "--wp-dir", wp_dir, "--modules", m["wp_module"],
          "--summary", wp_sum], work, os.path.join(work, "wp-gate.log"))
     if not os.path.exists(wp_sum):
-        return None, "no gate summary (see wp.log)", None
+        return None, "no gate summary (see wp.log)", None, [], []
     with open(wp_sum, encoding="utf-8") as f:
         mod = json.load(f).get("modules", {}).get(m["wp_module"], {})
     cache = {"replayed": mod.get("cache_replayed"), "fresh": mod.get("cache_fresh")}
     goals, smoke = mod.get("goals", 0), mod.get("smoke", 0)
     if mod.get("missing") or goals == 0:
         fatal = "; ".join(str(x) for x in mod.get("fatal", []))[:200]
-        return None, "no WP report (the mutant did not parse?)" + (f": {fatal}" if fatal else ""), cache
+        return (None, "no WP report (the mutant did not parse?)" + (f": {fatal}" if fatal else ""),
+                cache, [], [])
     open_goals = goals - mod.get("proved", 0)
     open_smoke = smoke - mod.get("smoke_passed", 0)
     failed = wp_failed_goals(mod)
-    cache["failed"] = failed
     if m["function"] in open_fns:
-        return None, "the function has open goals without the mutation", cache
+        return None, "the function has open goals without the mutation", cache, failed, []
     if open_goals > 0 or open_smoke > 0 or failed:
         named = (m.get("clauses") or {}).get("wp")
         v, why, hits = clause_verdict(named, failed or ["?"],
                                       f"{open_goals}/{goals} goals and {open_smoke}/{smoke} "
                                       "smoke tests not proved")
-        cache["named_failed"] = hits
-        return v, why, cache
+        return v, why, cache, failed, hits
     if mod.get("fatal"):
         fatal = "; ".join(str(x) for x in mod["fatal"])[:200]
-        return None, f"every goal proved but the log has errors: {fatal}", cache
-    return False, f"{goals} goals and {smoke} smoke tests proved", cache
+        return None, f"every goal proved but the log has errors: {fatal}", cache, failed, []
+    return False, f"{goals} goals and {smoke} smoke tests proved", cache, failed, []
 
 
 def cbmc_verdict(m, work):
@@ -352,9 +352,7 @@ def run_mutant(m, open_fns, use_cache):
                     seconds=round(time.time() - t0, 1))
     with open(path, "w", encoding="utf-8") as f:
         f.write(text.replace(m["find"], m["replace"]))
-    wp, wp_why, cache = wp_verdict(m, work, open_fns, use_cache)
-    cache = cache or {}
-    wp_failed, wp_hits = cache.pop("failed", []), cache.pop("named_failed", [])
+    wp, wp_why, cache, wp_failed, wp_hits = wp_verdict(m, work, open_fns, use_cache)
     cb, cb_why, cb_failed, cb_hits = cbmc_verdict(m, work)
     ok, reason = judge(m["reject_by"], wp, cb, {"wp": wp_why, "cbmc": cb_why})
     named = m.get("clauses") or {}
