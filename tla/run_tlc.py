@@ -101,7 +101,13 @@ def run_one(entry, args):
     shutil.copy(cfg_src, os.path.join(work, cfg))
     with open(cfg_src) as f:
         props = cfg_properties(f.read())
-    cmd = ["java", "-XX:+UseParallelGC", "-Xmx" + args.heap, "-cp", args.jar, "tlc2.TLC",
+    # TLC writes the standard modules (Naturals.tla, ...) into java.io.tmpdir before it parses
+    # them: a shared /tmp lets one run read another's half-written copy ("Parsing or semantic
+    # analysis failed" when models, traces and mutants run side by side), so each run has its own.
+    tmp = os.path.join(work, "tmp")
+    os.makedirs(tmp)
+    cmd = ["java", "-XX:+UseParallelGC", "-Xmx" + args.heap, "-Djava.io.tmpdir=" + tmp,
+           "-cp", args.jar, "tlc2.TLC",
            "-workers", "auto", "-cleanup"] + entry.get("tlc_args", []) + [
            "-metadir", os.path.join(work, "states"), "-config", cfg, module + ".tla"]
     timeout = entry.get("timeout_s", args.timeout)

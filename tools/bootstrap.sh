@@ -377,7 +377,7 @@ Inv == x \in 0..2
 ====
 EOF
     printf 'INIT Init\nNEXT Next\nINVARIANT Inv\n' >"$tmp/Tiny.cfg"
-    (cd "$tmp" && java -cp "$TOOLS/tla/tla2tools.jar" tlc2.TLC -workers 1 -metadir "$tmp/states" \
+    (cd "$tmp" && java -Djava.io.tmpdir="$tmp" -cp "$TOOLS/tla/tla2tools.jar" tlc2.TLC -workers 1 -metadir "$tmp/states" \
         -config Tiny.cfg Tiny.tla) >"$tmp/log" 2>&1 || { cat "$tmp/log" >&2; die "TLC failed"; }
     grep -q '3 distinct states found' "$tmp/log" || { cat "$tmp/log" >&2; die "TLC: unexpected result"; }
     rm -rf "$tmp"

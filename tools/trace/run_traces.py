@@ -193,7 +193,12 @@ def mutate(data_path, slots):
 def tlc(args, work, spec):
     # -Xss: the mission model's walk recurses once per command it visits (with
     # MT_CFG_MISSION_ADVANCE_EXTRA 255 the default stack overflows)
-    cmd = ["java", "-XX:+UseParallelGC", "-Xmx1g", "-Xss64m", "-cp", args.jar, "tlc2.TLC",
+    # a private java.io.tmpdir: TLC copies the standard modules there before parsing them,
+    # and a shared one races with every other TLC run (see tla/run_tlc.py)
+    tmp = os.path.join(work, "tmp")
+    os.makedirs(tmp, exist_ok=True)
+    cmd = ["java", "-XX:+UseParallelGC", "-Xmx1g", "-Xss64m", "-Djava.io.tmpdir=" + tmp,
+           "-cp", args.jar, "tlc2.TLC",
            "-workers", "auto", "-cleanup", "-metadir", os.path.join(work, "states"),
            "-config", spec + ".cfg", spec + ".tla"]
     p = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -297,6 +302,7 @@ def main():
                 with open(os.path.join(work, "tlc.log"), "w") as f:
                     f.write(log)
                 shutil.rmtree(os.path.join(work, "states"), ignore_errors=True)
+                shutil.rmtree(os.path.join(work, "tmp"), ignore_errors=True)
                 ok = result == expect
                 rec = {"name": label, "kind": kind, "cap": cap, "max_msg": max_msg,
                        "max_len": max_len, "drop_oldest": bool(drop), "seed": seed,
