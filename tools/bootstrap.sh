@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tools/bootstrap.sh — install and verify the Metronome toolchain.
 #
-#   tools/bootstrap.sh {test|cross|lint|prove|qemu|bench|sched|all} ...
+#   tools/bootstrap.sh {test|cross|lint|prove|qemu|bench|sched|mavlink|all} ...
 #
 # Idempotent: installs only what is missing (apt-get update runs only when an install is
 # needed), quiet on success, and ends with one line per tool and its version. Private tools
@@ -88,8 +88,11 @@ sanitizer_links() {
 
 # pymavlink's MAVLink definitions (common.xml, ardupilotmega.xml) feed
 # tools/mavcmd/gen_mav_cmds.py, which checks the committed mission command tables (make
-# check-mav-cmds). Pinned; pip installs it into .tools/pymavlink (no dependencies: only its XML
-# files are read) unless the python3 on the PATH already imports that version.
+# check-mav-cmds); its mavgen generates the vehicle's MAVLink C headers at build time
+# (vehicle/vehicle.mk, `tools/bootstrap.sh mavlink` installs only this), and its mavutil is
+# the ground station of the link tests (tests/vehicle/test_mavlink.py). Pinned; pip installs it
+# into .tools/pymavlink with no dependencies (the XML, mavgen's C generator and mavutil's UDP
+# connections need none) unless the python3 on the PATH already imports that version.
 PYMAVLINK_VERSION=2.4.50
 
 # pymavlink_version: the version `python3` imports, .tools/pymavlink first; fails if none.
@@ -445,14 +448,14 @@ do_sched() {
 }
 
 usage() {
-    printf 'usage: %s {test|cross|lint|prove|qemu|bench|sched|all} ...\n' "$0" >&2
+    printf 'usage: %s {test|cross|lint|prove|qemu|bench|sched|mavlink|all} ...\n' "$0" >&2
     exit 2
 }
 
 [ "$#" -ge 1 ] || usage
 for cmd in "$@"; do
     case "$cmd" in
-        test | cross | lint | prove | qemu | bench | sched) ;;
+        test | cross | lint | prove | qemu | bench | sched | mavlink) ;;
         all) ;;
         *) usage ;;
     esac
@@ -466,6 +469,7 @@ for cmd in "$@"; do
         qemu) do_qemu ;;
         bench) do_bench ;;
         sched) do_sched ;;
+        mavlink) ensure_pymavlink ;;
         all) do_test; do_cross; do_lint; do_prove; do_qemu; do_bench; do_sched ;;
     esac
 done

@@ -22,6 +22,7 @@ ifeq ($(strip $(CHIBIOS)),)
 	@echo "firmware: $(FW_SKIP)"
 else
 	@tools/bootstrap.sh cross
+	$(if $(filter vehicle,$(APP)),@$(MAKE) --no-print-directory mavlink-headers)
 	@$(MAKE) --no-print-directory -f hal_chibios/mk/firmware.mk -j$(NPROC) CHIBIOS="$(CHIBIOS)" \
 	    BUILD="$(BUILD)" BOARD="$(or $(BOARD),qemu-mps2-an386)" APP="$(or $(APP),smoke)" \
 	    $(if $(filter vehicle,$(APP)),APPDIR="$(CURDIR)/vehicle/deploy/chibios")

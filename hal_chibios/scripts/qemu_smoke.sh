@@ -47,6 +47,12 @@ build() { # variant [make args...]; APP_NAME/APP_DIR select another app than smo
     shift
     mkdir -p "$OUT"
     log="$OUT/$variant.build.log"
+    if [ -n "${APP_DIR:-}" ] && ! make --no-print-directory -C "$ROOT" BUILD="$BUILD" mavlink-headers \
+            >"$log" 2>&1; then
+        tail -n 30 "$log"
+        bad "MAVLink headers for $variant (log: $log)"
+        return 1
+    fi
     if ! make --no-print-directory -C "$ROOT" -f hal_chibios/mk/firmware.mk -j"$JOBS" \
             CHIBIOS="$CHIBIOS" BUILD="$BUILD" BOARD="$BOARD" APP="${APP_NAME:-smoke}" \
             ${APP_DIR:+APPDIR="$APP_DIR"} VARIANT="$variant" "$@" \

@@ -519,6 +519,164 @@ def t_encoding(S):
             check(skips > 200, "the overloaded trace has skips to compare (%d)" % skips)
 
 
+# ---- the MAVLink link (pymavlink's mavutil as the ground station) ----------------------------
+
+def mavlink_session(S, args, timeout=90, binary=None):
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import mavgcs
+    return mavgcs, mavgcs.Session(binary or S.sitl, ["--quiet"] + args, timeout=timeout)
+
+
+def t_mavlink_flight(S):
+    """A ground station on UDP watches a whole flight at 20x: identity and modes, the streams at
+    their rates, the parameter protocol (list, read, set, an out-of-range set refused), the
+    console lines as STATUSTEXT, MISSION_CURRENT and MISSION_ITEM_REACHED for every nav
+    command, and the SITL's summary counts what crossed the link."""
+    g, sess = mavlink_session(S, ["--speedup", "20", os.path.join(MISSIONS, "plain.waypoints")])
+    mav = g.mav
+    with sess as s:
+        hb = s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        check(hb.type == mav.MAV_TYPE_QUADROTOR and hb.autopilot == mav.MAV_AUTOPILOT_ARDUPILOTMEGA,
+              "identity: %s" % hb)
+        check(hb.get_srcComponent() == mav.MAV_COMP_ID_AUTOPILOT1, "component id %d" % hb.get_srcComponent())
+        s.conn.mav.param_request_list_send(1, 1)
+        plist = [s.wait("PARAM_VALUE") for _ in range(2)]
+        check([(p.param_id, p.param_index, p.param_count, p.param_value) for p in plist] ==
+              [("SYSID_THISMAV", 0, 2, 1.0), ("WPNAV_SPEED", 1, 2, 500.0)], "parameter list %s" % plist)
+        check(plist[0].param_type == mav.MAV_PARAM_TYPE_INT16 and plist[1].param_type == mav.MAV_PARAM_TYPE_REAL32,
+              "parameter types")
+        s.conn.mav.param_set_send(1, 1, b"WPNAV_SPEED", 900.0, mav.MAV_PARAM_TYPE_REAL32)
+        check(s.wait("PARAM_VALUE").param_value == 900.0, "WPNAV_SPEED set")
+        s.conn.mav.param_set_send(1, 1, b"WPNAV_SPEED", 5000.0, mav.MAV_PARAM_TYPE_REAL32)
+        check(s.wait("PARAM_VALUE").param_value == 900.0, "out-of-range set answered with the value in force")
+        s.conn.mav.param_request_read_send(1, 1, b"SYSID_THISMAV", -1)
+        check(s.wait("PARAM_VALUE").param_id == "SYSID_THISMAV", "read by name")
+        s.wait("STATUSTEXT", lambda m: m.text == "mission: complete", seconds=80)
+        s.wait("HEARTBEAT", lambda m: not (m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED))
+        s.stop()
+    out = s.out
+    modes = [(m.custom_mode, bool(m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED), m.system_status)
+             for m in s.of("HEARTBEAT")]
+    check((mav.COPTER_MODE_STABILIZE, False, mav.MAV_STATE_STANDBY) in modes and
+          (mav.COPTER_MODE_AUTO, True, mav.MAV_STATE_ACTIVE) in modes, "modes seen: %s" % sorted(set(modes)))
+    check(modes[-1][1] is False, "disarmed at the end")
+    # rates, in the vehicle's time: ATTITUDE 10 Hz, positions 5 Hz each, HEARTBEAT 1 Hz
+    att = [m.time_boot_ms for m in s.of("ATTITUDE")]
+    secs = (att[-1] - att[0]) / 1000.0
+    gaps = [b - a for a, b in zip(att, att[1:])]
+    check(secs > 40 and 95 <= min(gaps) and max(gaps) <= 105, "ATTITUDE every 100 ms over %.0f s: gaps %d..%d ms"
+          % (secs, min(gaps), max(gaps)))
+    pos = s.of("GLOBAL_POSITION_INT")
+    check(abs(len(pos) - 5 * secs) <= 2 and abs(len(s.of("GPS_RAW_INT")) - 5 * secs) <= 2, "5 Hz positions")
+    check(abs(len(s.of("HEARTBEAT")) - secs) <= 2 and abs(len(s.of("SYS_STATUS")) - secs) <= 2, "1 Hz heartbeat")
+    check(max(p.relative_alt for p in pos) > 14000 and abs(pos[0].lat - 465197000) < 200, "position: %s" % pos[0])
+    gps = s.of("GPS_RAW_INT")[-1]
+    check(gps.fix_type == 3 and gps.satellites_visible > 5, "GPS: %s" % gps)
+    st = s.of("SYS_STATUS")
+    check(all(0 < x.load <= 1000 for x in st[5:]) and 14000 < st[-1].voltage_battery < 17500, "SYS_STATUS %s" % st[-1])
+    check(st[-1].onboard_control_sensors_health == st[-1].onboard_control_sensors_present, "sensors healthy")
+    check([m.seq for m in s.of("MISSION_ITEM_REACHED")] == [1, 2, 3, 4, 5, 6], "items reached")
+    cur = s.of("MISSION_CURRENT")
+    check(all(c.total == 6 for c in cur) and {2, 3, 4, 5} <= {c.seq for c in cur} and
+          mav.MISSION_STATE_ACTIVE in {c.mission_state for c in cur}, "MISSION_CURRENT")
+    texts = statustext_lines(s.of("STATUSTEXT"))
+    said = [e[:95] for e in S_events(out)]
+    check(texts == said[:len(texts)] and len(texts) >= len(said) - 2, "every console line as STATUSTEXT:\n%s\n%s"
+          % (texts, said))
+    check(any(m.severity == mav.MAV_SEVERITY_WARNING and "refused" in m.text for m in s.of("STATUSTEXT")),
+          "warnings as such")
+    # the cruise speed set from the ground (9 m/s) is flown: 5 m/s before
+    check(float(re.search(r"max ground speed ([0-9.]+)", out).group(1)) > 8.0, "WPNAV_SPEED flown")
+    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused = link_counts(out)
+    check(full == 0 and lost == 0 and dropped == 0 and noise == 0 and unknown == 0 and refused == 1,
+          "link counts %s" % (link_counts(out),))
+    check(sent >= len(s.msgs) and recvd >= 5, "messages: %d sent, %d seen by the GCS" % (sent, len(s.msgs)))
+    check(s.out.count("run ended: interrupted (signal)") == 1, "the session ends on SIGINT")
+
+
+def link_counts(out):
+    """The summary's link line: sent, bytes, not sent, lines lost, received, ignored, frames
+    dropped, noise bytes, unknown parameters, refused sets."""
+    m = re.search(r"link \(MAVLink 2\): (\d+) messages, (\d+) bytes sent, (\d+) not sent \(ring full\), (\d+) "
+                  r"console lines lost; (\d+) messages received, (\d+) ignored, (\d+) frames dropped, (\d+) "
+                  r"bytes not in a valid frame, (\d+) parameter requests unknown, (\d+) sets refused", out)
+    check(m is not None, "link summary line:\n" + out[-2000:])
+    return tuple(map(int, m.groups()))
+
+
+def statustext_lines(msgs):
+    """STATUSTEXT reassembled: chunks of one id in chunk_seq order, up to the short one."""
+    lines, parts = [], {}
+    for m in msgs:
+        if m.id == 0:
+            lines.append(m.text)
+            continue
+        parts.setdefault(m.id, []).append((m.chunk_seq, m.text))
+        if len(m.text) < 50:
+            chunks = parts.pop(m.id)
+            check([c for c, _ in chunks] == list(range(len(chunks))), "chunks of id %d: %s" % (m.id, chunks))
+            lines.append("".join(t for _, t in chunks))
+    check(not parts, "unfinished STATUSTEXT chunks: %s" % parts)
+    return lines
+
+
+def S_events(out):
+    return [m.group(1) for m in re.finditer(r"^\[\s*[0-9.]+\] (.*)$", out, re.M)]
+
+
+def t_mavlink_no_mission(S, binary=None):
+    """Without a mission the vehicle waits for the ground station (no 'never armed' end), tells
+    it there is no mission, survives garbage on the link (counted), answers an unknown parameter
+    by counting it, and streams to whoever talked to it last."""
+    g, sess = mavlink_session(S, ["--speedup", "50"], binary=binary)
+    mav = g.mav
+    with sess as s:
+        hb = s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        check(hb.system_status == mav.MAV_STATE_STANDBY and not hb.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED,
+              "standby")
+        cur = s.wait("MISSION_CURRENT")
+        check(cur.mission_state == mav.MISSION_STATE_NO_MISSION and cur.total == 0, "no mission: %s" % cur)
+        # past the 15 s a run without a ground station waits for arming
+        s.wait("ATTITUDE", lambda m: m.time_boot_ms > 20000, seconds=40)
+        # a corrupted frame (CRC) and noise: dropped and counted, the link goes on
+        good = s.conn.mav.param_request_read_encode(1, 1, b"SYSID_THISMAV", -1).pack(s.conn.mav)
+        bad = bytearray(good)
+        bad[-1] ^= 0xFF
+        s.conn.write(bytes(bad) + b"\x00\x01garbage")
+        s.conn.mav.param_request_read_send(1, 1, b"NO_SUCH_PARAM", -1)
+        s.conn.mav.param_request_read_send(1, 1, b"WPNAV_SPEED", -1)
+        check(s.wait("PARAM_VALUE").param_id == "WPNAV_SPEED", "answered after the garbage")
+        # a second ground station talks: the vehicle now answers there
+        check(len(s.conn.clients) == 1, "one vehicle address: %s" % s.conn.clients)
+        other = g.mavutil.mavlink_connection("udpout:%s:%d" % next(iter(s.conn.clients)), source_system=254,
+                                             dialect="ardupilotmega")
+        try:
+            t_end = time.time() + 20
+            got = None
+            while got is None and time.time() < t_end:
+                other.mav.heartbeat_send(mav.MAV_TYPE_GCS, mav.MAV_AUTOPILOT_INVALID, 0, 0, 0)
+                got = other.recv_match(type="HEARTBEAT", blocking=True, timeout=0.5)
+            check(got is not None and got.get_srcSystem() == 1, "the vehicle answers the new sender")
+        finally:
+            other.close()
+        s.stop()
+    out = s.out
+    check("run ended: interrupted (signal)" in out, "session end:\n" + out[-800:])
+    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused = link_counts(out)
+    check(dropped == 1, "the corrupted frame is counted (%d)" % dropped)
+    check(noise == len(bad) + len(b"\x00\x01garbage"), "bytes outside valid frames counted (%d)" % noise)
+    check(unknown == 1 and refused == 0, "unknown parameter counted")
+    check(recvd >= 3, "received %d: the two reads and a heartbeat at least" % recvd)
+    check(s.rc == 1, "exit status %s (no mission completed)" % s.rc)
+    return s
+
+
+def t_mavlink_sanitizers(S):
+    """The link's parser and answers under ASan+UBSan: the same session, no report."""
+    s = t_mavlink_no_mission(S, binary=S.sitl_asan)
+    check("runtime error" not in s.err and "AddressSanitizer" not in s.err, "sanitizers: %s" % s.err[-1500:])
+
+
 TESTS = [
     ("vprint: console formatter against printf (ASan+UBSan)", t_vprint),
     ("sched_check: vehicle/tasks.def is schedulable", t_sched_nominal),
@@ -540,6 +698,9 @@ TESTS = [
     ("sched_check: the tick encoding decides as the kernel, tick by tick", t_encoding),
     ("sitl: ASan+UBSan build", t_sanitizers),
     ("sitl: --realtime on real threads (TSan build)", t_realtime),
+    ("mavlink: a ground station watches a flight (streams, parameters, mission)", t_mavlink_flight),
+    ("mavlink: no mission, garbage on the link, a second ground station", t_mavlink_no_mission),
+    ("mavlink: the same session in the ASan+UBSan build", t_mavlink_sanitizers),
 ]
 
 

@@ -53,8 +53,11 @@ veh_gcs_cmd_t veh_run_arm_poll(veh_run_t *r)
 }
 
 /* Why the run ends after this tick, or NULL. */
-static const char *end_reason(veh_phase_t ph, uint64_t now, uint64_t timeout_us)
+static const char *end_reason(veh_phase_t ph, uint64_t now, uint64_t timeout_us, bool gcs)
 {
+    if (gcs && (ph != VEH_PHASE_CRASHED) && (now <= timeout_us)) {
+        return NULL; /* the ground station's session goes on */
+    }
     if (ph == VEH_PHASE_DONE) {
         return "mission complete, vehicle landed and disarmed";
     }
@@ -87,7 +90,7 @@ bool veh_run_after_tick(veh_run_t *r, const simplat_t *world)
         return false; /* exactly max_ticks ticks */
     }
     if (r->reason == NULL) {
-        r->reason = end_reason(ph, now, r->timeout_us);
+        r->reason = end_reason(ph, now, r->timeout_us, r->gcs_session);
         if (r->reason != NULL) {
             r->end_us = now + r->settle_us;
         }

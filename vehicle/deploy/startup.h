@@ -39,6 +39,8 @@ typedef struct {
     uint64_t next_arm_us; /**< the ground station's next arm request */
     uint64_t end_us;      /**< since boot: when the run stops */
     const char *reason;   /**< why the run ends; NULL while it goes on */
+    bool gcs_session;     /**< a ground station is connected (MAVLink): only a crash, the
+                               timeout or the tick limit end the run */
 } veh_run_t;
 
 /** Home from a mission's item 0 (its location). */

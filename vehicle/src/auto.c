@@ -354,6 +354,7 @@ static bool cb_verify(void *ctx, uint16_t index, const mt_mission_cmd_t *cmd)
     if ((s->nav.index != index) || !s->nav.done) {
         return false;
     }
+    v->au.reached_index = index;
     v->c.wps_reached++;
     veh_log_cmd(v, index, cmd->id, 2u);
     if ((cmd->id == MT_MAV_CMD_WAYPOINT) || (cmd->id == MT_MAV_CMD_SPLINE_WAYPOINT)) {

@@ -14,6 +14,8 @@
 typedef struct {
     const veh_platform_t *plat;
     uint64_t boot_us;
+    uint32_t said;                           /**< lines said (veh_say) */
+    char kept[VEH_SAID_KEEP][VEH_SAID_TEXT]; /**< line seq at kept[(seq - 1) % KEEP] */
 } veh_console_t;
 
 static veh_console_t g_console;
@@ -22,6 +24,27 @@ void veh_console_init(const veh_platform_t *plat)
 {
     g_console.plat = plat;
     g_console.boot_us = mt_port_now_us();
+    g_console.said = 0u;
+}
+
+bool veh_console_said(uint32_t seq, char text[VEH_SAID_TEXT])
+{
+    const char *k;
+    uint32_t i;
+
+    if ((seq == 0u) || (seq > g_console.said) || ((g_console.said - seq) >= VEH_SAID_KEEP)) {
+        return false;
+    }
+    k = g_console.kept[(seq - 1u) % VEH_SAID_KEEP];
+    for (i = 0u; i < VEH_SAID_TEXT; i++) {
+        text[i] = k[i];
+    }
+    return true;
+}
+
+uint32_t veh_console_said_count(void)
+{
+    return g_console.said;
 }
 
 uint64_t veh_now(void)
@@ -40,6 +63,8 @@ typedef struct {
     const veh_platform_t *p;
     size_t n;
     char buf[192];
+    char *keep; /**< NULL, or where the text is also kept for the link (VEH_SAID_TEXT) */
+    size_t kn;
 } veh_line_t;
 
 static void line_flush(veh_line_t *l)
@@ -61,6 +86,10 @@ static void line_sink(void *ctx, const char *s, size_t n)
         }
         l->buf[l->n] = s[i];
         l->n++;
+        if ((l->keep != NULL) && (l->kn + 1u < VEH_SAID_TEXT)) {
+            l->keep[l->kn] = s[i];
+            l->kn++;
+        }
     }
 }
 
@@ -98,6 +127,8 @@ void veh_printf(const char *fmt, ...)
 
     l.p = g_console.plat;
     l.n = 0u;
+    l.keep = NULL;
+    l.kn = 0u;
     va_start(ap, fmt);
     (void)vp_vformat(line_sink, &l, fmt, ap);
     va_end(ap);
@@ -111,10 +142,17 @@ void veh_say(const char *fmt, ...)
 
     l.p = g_console.plat;
     l.n = 0u;
+    l.keep = NULL;
+    l.kn = 0u;
     stamp(&l);
+    /* the text after the time stamp is kept for the link, cut to VEH_SAID_TEXT - 1 */
+    g_console.said++;
+    l.keep = g_console.kept[(g_console.said - 1u) % VEH_SAID_KEEP];
     va_start(ap, fmt);
     (void)vp_vformat(line_sink, &l, fmt, ap);
     va_end(ap);
+    l.keep[l.kn] = '\0';
+    l.keep = NULL;
     line_sink(&l, "\n", 1u);
     line_flush(&l);
 }

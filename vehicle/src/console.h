@@ -15,6 +15,7 @@
 #ifndef VEH_CONSOLE_H
 #define VEH_CONSOLE_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "veh.h"
@@ -32,8 +33,21 @@ uint64_t veh_now(void);
 /** Time the vehicle was set up (veh_console_init), us. */
 uint64_t veh_boot_us(void);
 
-/** One console line "[   s.mmm] text\n", the time since boot in front. */
+/** One console line "[   s.mmm] text\n", the time since boot in front. The text (without
+ *  the time) is also kept for the ground-station link (veh_console_said). */
 void veh_say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/** Lines kept for the link, and the longest text kept of one (longer ones are cut). */
+#define VEH_SAID_KEEP 8u
+#define VEH_SAID_TEXT 96u
+
+/** The text of line number seq (1 = the first veh_say since veh_console_init). true: copied
+ *  into text (VEH_SAID_TEXT bytes, NUL-terminated); false: not said yet, or overwritten by
+ *  newer lines (veh_console_said_count() - seq >= VEH_SAID_KEEP: the reader has lost it). */
+bool veh_console_said(uint32_t seq, char text[VEH_SAID_TEXT]);
+
+/** Lines said so far. */
+uint32_t veh_console_said_count(void);
 
 #ifdef __cplusplus
 }

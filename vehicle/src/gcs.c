@@ -2,9 +2,10 @@
 /**
  * @file gcs.c
  * @brief gcs_update (400 Hz): ground-station commands (arm and fly AUTO, stop,
- *        resume, land) with the pre-arm checks; telemetry_send (10 Hz): a
- *        status packet. The estimate (and the sensors' health in it) comes from
- *        the `estimate` topic; arming and modes go through posctl.c.
+ *        resume, land) with the pre-arm checks, then the MAVLink link's receive
+ *        side; telemetry_send (10 Hz): the link's telemetry streams (link.c).
+ *        The estimate (and the sensors' health in it) comes from the
+ *        `estimate` topic; arming and modes go through posctl.c.
  */
 #include <string.h>
 
@@ -98,52 +99,10 @@ void veh_gcs_update(veh_t *v)
     case VEH_GCS_NONE:
     default: break;
     }
-}
-
-static void put_u16(uint8_t *p, uint32_t v)
-{
-    p[0] = (uint8_t)(v & 0xFFu);
-    p[1] = (uint8_t)((v >> 8) & 0xFFu);
-}
-
-static void put_u32(uint8_t *p, uint32_t v)
-{
-    put_u16(p, v & 0xFFFFu);
-    put_u16(p + 2, v >> 16);
+    veh_link_receive(v);
 }
 
 void veh_telemetry_send(veh_t *v)
 {
-    const veh_flight_t *s = &v->fl;
-    veh_estimate_msg_t est;
-    uint8_t pkt[32];
-    int32_t lat;
-    int32_t lon;
-    uint32_t i;
-    uint8_t sum = 0u;
-    float gs;
-
-    veh_latest(&v->gcs.est_sub, &est, (uint32_t)sizeof(est));
-    gs = vm_norm2(est.vel[0], est.vel[1]);
-    vm_ll_from_ne(v->home.lat, v->home.lon, est.pos[0], est.pos[1], &lat, &lon);
-    pkt[0] = 0x54u; /* 'T' */
-    pkt[1] = 27u;   /* payload bytes */
-    pkt[2] = v->gcs.telem_seq++;
-    put_u32(&pkt[3], (uint32_t)((veh_now() - veh_boot_us()) / 1000u));
-    pkt[7] = (uint8_t)s->mode;
-    pkt[8] = s->armed ? 1u : 0u;
-    put_u32(&pkt[9], (uint32_t)lat);
-    put_u32(&pkt[13], (uint32_t)lon);
-    put_u32(&pkt[17], (uint32_t)(int32_t)lroundf(-est.pos[2] * 100.0f));
-    put_u16(&pkt[21], (uint32_t)lroundf(vm_clamp(gs, 0.0f, 600.0f) * 100.0f));
-    put_u16(&pkt[23], (uint32_t)lroundf(est.att[2] * VM_RAD2DEG * 100.0f));
-    put_u16(&pkt[25], v->mission.nav);
-    put_u16(&pkt[27], (uint32_t)lroundf(vm_clamp(veh_battery_volts(v), 0.0f, 60.0f) * 1000.0f));
-    for (i = 2u; i < 29u; i++) {
-        sum = (uint8_t)(sum + pkt[i]);
-    }
-    pkt[29] = sum;
-    v->plat->telem_write(v->plat->ctx, pkt, 30u);
-    v->c.telem_packets++;
-    v->c.telem_bytes += 30u;
+    veh_link_stream(v);
 }

@@ -48,6 +48,11 @@ float veh_battery_volts(const veh_t *v)
     return v->house.bat_volt;
 }
 
+float veh_battery_amps(const veh_t *v)
+{
+    return v->house.bat_amp;
+}
+
 void veh_housekeeping(veh_t *v)
 {
     veh_house_t *s = &v->house;

@@ -533,6 +533,13 @@ static void nav_run(veh_t *v)
 
 void veh_nav_update(veh_t *v)
 {
+    veh_flight_t *s = &v->fl;
+
+    /* a WPNAV_SPEED set by the ground station is the cruise speed from now on */
+    if (s->speed_gen != v->par.gen[VEH_PARAM_WPNAV_SPEED]) {
+        s->speed_gen = v->par.gen[VEH_PARAM_WPNAV_SPEED];
+        s->speed_xy = v->par.wpnav_speed_cms * 0.01f;
+    }
     est_refresh(v);
     nav_run(v);
     sp_publish(v);

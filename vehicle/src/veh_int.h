@@ -8,6 +8,8 @@
  *   attctl.c    attitude_run (fast): attitude and rate controllers
  *   motors.c    motors_output (fast): mixer, motor outputs
  *   gcs.c       gcs_update: ground-station commands; telemetry_send
+ *   link.c      the MAVLink link (gcs_update and telemetry_send call it): parameters,
+ *               telemetry streams, console lines as STATUSTEXT
  *   baro.c      the barometer driver (timer proc) and baro_update
  *   gps.c       gps_update
  *   posctl.c    nav_update: flight modes, navigation targets, position controller
@@ -224,7 +226,8 @@ typedef struct {
     float leg_s;
     float leg_v;
     bool leg_done;
-    float speed_xy; /**< cruise speed, m/s */
+    float speed_xy;     /**< cruise speed, m/s (WPNAV_SPEED; DO_CHANGE_SPEED until it changes) */
+    uint32_t speed_gen; /**< WPNAV_SPEED's set count when speed_xy last took it */
     uint64_t last_nav_us;
     /* modes */
     veh_mode_t mode;
@@ -251,15 +254,26 @@ typedef struct {
     mt_sub_t est_sub;
     veh_estimate_msg_t est; /**< newest estimate, taken at each callback */
     veh_docmd_t doc;
+    uint16_t reached_index; /**< mission index of the newest nav command verified */
 } veh_auto_t;
 
 /** gcs.c */
 typedef struct {
     mt_sub_t est_sub;
-    uint8_t telem_seq;
     bool arm_refused_said;
     char refuse_reason[64];
 } veh_gcs_t;
+
+/** The parameters a ground station reads and sets (link.c serves them; set only there,
+ *  read by the components that use them). */
+#define VEH_PARAM_SYSID 0u       /**< SYSID_THISMAV: this vehicle's MAVLink system id (1..255) */
+#define VEH_PARAM_WPNAV_SPEED 1u /**< WPNAV_SPEED: cruise speed, cm/s (50..1500) */
+#define VEH_NPARAMS 2u
+typedef struct {
+    uint8_t sysid;
+    float wpnav_speed_cms;
+    uint32_t gen[VEH_NPARAMS]; /**< per parameter: incremented by every accepted set */
+} veh_params_t;
 
 /** house.c (the battery state from the `battery` topic and the health warnings) */
 typedef struct {
@@ -302,6 +316,7 @@ typedef struct {
     veh_gcs_t gcs;
     veh_house_t house;
     veh_logger_t lg;
+    veh_params_t par;
     bool crashed; /**< the deployment reported a crash (veh_note_crash) */
     /* threads' hand-offs */
     veh_bus_t bus;
@@ -351,6 +366,15 @@ mt_status_t veh_battery_init(veh_t *v);
 /* battery state (house.c) */
 bool veh_battery_ok(const veh_t *v);
 float veh_battery_volts(const veh_t *v);
+float veh_battery_amps(const veh_t *v);
+
+/* ground-station link (link.c): MAVLink 2 over the rings of veh_link_rx / veh_link_tx */
+#define VEH_LINK_RX_BYTES 1024u
+#define VEH_LINK_TX_BYTES 4096u
+void veh_link_init(void);
+void veh_params_default(veh_params_t *p);
+void veh_link_receive(veh_t *v); /**< gcs_update: parse, answer, one event message */
+void veh_link_stream(veh_t *v);  /**< telemetry_send: the periodic streams */
 
 /* AUTO mode (auto.c) */
 void veh_auto_init(veh_t *v);

@@ -226,9 +226,11 @@ mt_status_t veh_init(const veh_platform_t *plat, const veh_home_t *home,
     memset(v, 0, sizeof(*v));
     v->plat = plat;
     v->home = *home;
-    v->fl.speed_xy = 5.0f;
+    veh_params_default(&v->par);
+    v->fl.speed_xy = v->par.wpnav_speed_cms * 0.01f;
     v->fl.yaw_rate = 60.0f * VM_DEG2RAD;
     veh_console_init(plat);
+    veh_link_init();
     mt_sem_init(&v->bus.sem, true);
     (void)veh_baro_link_init(&v->baro_link);
     veh_log_init(v);
@@ -474,7 +476,13 @@ void veh_summary(const char *stop_reason)
                (unsigned long long)c->log_records, (unsigned long long)c->log_bytes,
                (unsigned)c->log_dropped, (unsigned)c->log_max_fill, (unsigned)sizeof(v->log_store),
                (unsigned long long)v->io_procs.dispatches);
-    veh_printf("telemetry: %llu packets, %llu bytes\n", (unsigned long long)c->telem_packets,
-               (unsigned long long)c->telem_bytes);
+    veh_printf("link (MAVLink 2): %llu messages, %llu bytes sent, %u not sent (ring full), %u "
+               "console lines lost; %u messages received, %u ignored, %u frames dropped, %llu "
+               "bytes not in a valid frame, %u parameter requests unknown, %u sets refused\n",
+               (unsigned long long)c->telem_packets, (unsigned long long)c->telem_bytes,
+               (unsigned)c->telem_full, (unsigned)c->said_lost, (unsigned)c->link_rx_msgs,
+               (unsigned)c->link_rx_ignored, (unsigned)c->link_rx_errors,
+               (unsigned long long)(c->link_rx_bytes - c->link_rx_frame_bytes),
+               (unsigned)c->link_param_unknown, (unsigned)c->link_param_refused);
     veh_summary_battery(v);
 }

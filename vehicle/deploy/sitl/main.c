@@ -17,6 +17,13 @@
  *                        its cost (from START s for DURATION s; default: always)
  *     --wind N,E         constant wind, m/s
  *     --quiet            no 1 Hz status lines
+ *     --mavlink udp:ADDR:PORT
+ *                        MAVLink 2 ground-station link over UDP: sends to ADDR:PORT (a ground
+ *                        station listening there: QGroundControl and MAVProxy listen on 14550)
+ *                        and answers whoever sends to it; only a crash or the timeout end the
+ *                        run (Ctrl-C: the summary, exit 1)
+ *     --speedup N        simulated time paced at N x the wall clock (default with --mavlink: 1;
+ *                        without: as fast as possible)
  *     --trace FILE       simulated time: one line per event for the first --ticks (or all)
  *                        ticks: "S t" sample, "R due cost" timer round, "E task cost"
  *                        task run, "K tick end runmask skipmask" end of the scan
@@ -34,12 +41,17 @@
  * (rejected mission, never armed, crash, timeout), 2 usage or I/O error.
  */
 #define _GNU_SOURCE
+#include <arpa/inet.h>
 #include <math.h>
+#include <netinet/in.h>
+#include <signal.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/socket.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "builtin_mission.h"
 #include "mt/mt.h"
@@ -66,7 +78,14 @@ typedef struct {
     FILE *log;
     uint64_t log_written;
     bool log_error;
-    uint64_t telem_bytes;
+    /* the ground-station link (--mavlink) */
+    int link_fd;              /* UDP socket, -1: none (the link's bytes are discarded) */
+    struct sockaddr_in gcs;   /* where the link sends: --mavlink's address, then the last sender */
+    uint64_t link_rx_bytes;   /* into the vehicle's receive ring */
+    uint32_t link_rx_dropped; /* datagrams that did not fit in the receive ring */
+    uint64_t link_tx_bytes;   /* out of the vehicle's transmit ring */
+    uint32_t link_tx_errors;  /* datagrams sendto refused (nobody listening, ...) */
+    double speedup;           /* simulated time at speedup x the wall clock; 0: free-running */
     /* simulated time */
     uint64_t next_sample;
     uint32_t period_us;
@@ -114,11 +133,99 @@ static void cb_log_sink(void *ctx, const uint8_t *data, uint32_t n)
     s->log_written += n;
 }
 
-static void cb_telem(void *ctx, const uint8_t *data, uint32_t n)
+/* ---- ground-station link: UDP <-> the vehicle's byte rings (main-loop thread) ------------- */
+
+static volatile sig_atomic_t g_interrupted;
+
+static void on_signal(int sig)
 {
-    sitl_t *s = (sitl_t *)ctx;
-    (void)data;
-    s->telem_bytes += n;
+    (void)sig;
+    g_interrupted = 1;
+}
+
+/* "udp:ADDR:PORT" -> a non-blocking UDP socket that sends there. */
+static bool link_open(sitl_t *s, const char *spec)
+{
+    char addr[64];
+    const char *colon;
+    char *end = NULL;
+    unsigned long port;
+    struct sockaddr_in any;
+
+    if (strncmp(spec, "udp:", 4u) != 0) {
+        return false;
+    }
+    spec += 4;
+    colon = strrchr(spec, ':');
+    if ((colon == NULL) || ((size_t)(colon - spec) >= sizeof(addr))) {
+        return false;
+    }
+    memcpy(addr, spec, (size_t)(colon - spec));
+    addr[colon - spec] = '\0';
+    port = strtoul(colon + 1, &end, 10);
+    if ((end == colon + 1) || (*end != '\0') || (port == 0u) || (port > 65535u)) {
+        return false;
+    }
+    memset(&s->gcs, 0, sizeof(s->gcs));
+    s->gcs.sin_family = AF_INET;
+    s->gcs.sin_port = htons((uint16_t)port);
+    if (inet_pton(AF_INET, addr, &s->gcs.sin_addr) != 1) {
+        return false;
+    }
+    s->link_fd = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK, 0);
+    memset(&any, 0, sizeof(any));
+    any.sin_family = AF_INET;
+    if ((s->link_fd < 0) || (bind(s->link_fd, (struct sockaddr *)&any, sizeof(any)) != 0)) {
+        fprintf(stderr, "sitl: cannot open a UDP socket for --mavlink\n");
+        exit(2);
+    }
+    return true;
+}
+
+/* Datagrams in (whole, or dropped and counted when the ring cannot take them), the transmit
+ * ring out. Without a socket the transmit ring is drained and its bytes only counted. */
+static void link_pump(sitl_t *s)
+{
+    mt_bring_t *rx = veh_link_rx();
+    mt_bring_t *tx = veh_link_tx();
+    uint8_t buf[2048];
+    uint32_t n;
+
+    while (s->link_fd >= 0) {
+        struct sockaddr_in from;
+        socklen_t flen = sizeof(from);
+        ssize_t got = recvfrom(s->link_fd, buf, sizeof(buf), 0, (struct sockaddr *)&from, &flen);
+        if (got <= 0) {
+            break;
+        }
+        s->gcs = from; /* answer whoever talks to the vehicle */
+        if (mt_bring_space(rx) < (uint32_t)got) {
+            s->link_rx_dropped++;
+            continue;
+        }
+        (void)mt_bring_write(rx, buf, (uint32_t)got);
+        s->link_rx_bytes += (uint64_t)got;
+    }
+    while ((n = mt_bring_read(tx, buf, (uint32_t)sizeof(buf))) > 0u) {
+        if ((s->link_fd >= 0) && (sendto(s->link_fd, buf, n, 0, (struct sockaddr *)&s->gcs,
+                                         sizeof(s->gcs)) != (ssize_t)n)) {
+            s->link_tx_errors++;
+        }
+        s->link_tx_bytes += n;
+    }
+}
+
+/* Simulated time no faster than speedup x the wall clock since w0. */
+static void pace(const sitl_t *s, double w0, double (*wall)(void))
+{
+    double ahead = w0 + ((double)(mt_port_now_us() - s->run.boot_us) * 1e-6 / s->speedup) - wall();
+
+    if (ahead > 0.0) {
+        struct timespec ts;
+        ts.tv_sec = (time_t)ahead;
+        ts.tv_nsec = (long)((ahead - (double)ts.tv_sec) * 1e9);
+        (void)nanosleep(&ts, NULL);
+    }
 }
 
 static veh_gcs_cmd_t cb_gcs_poll(void *ctx)
@@ -358,7 +465,8 @@ static int load_file(const char *path, mt_mission_cmd_t *cmds, veh_home_t *home)
             printf("  %s %s (%s)\n", mt_wpl_where(where, sizeof where, path, x), x->reason,
                    mt_status_str(x->st));
         }
-    } else if (mt_mfile_parse(fmt, text, len, items, MT_CFG_MISSION_MAX_CMDS, &n, &e, NULL) == MT_OK) {
+    } else if (mt_mfile_parse(fmt, text, len, items, MT_CFG_MISSION_MAX_CMDS, &n, &e, NULL) ==
+               MT_OK) {
         result = (int)n;
         for (i = 0u; i < n; i++) {
             if (mt_wpl_to_cmd(&items[i], &cmds[i], &e) != MT_OK) {
@@ -388,7 +496,7 @@ static int usage(void)
             "usage: metronome-sitl [--builtin] [--realtime] [--seed N] [--timeout S] [--ticks N]\n"
             "                      [--log FILE] [--event T:stop|resume|land]...\n"
             "                      [--overrun TASK:US[:START[:DURATION]]] [--wind N,E] [--quiet]\n"
-            "                      [--trace FILE]\n"
+            "                      [--trace FILE] [--mavlink udp:ADDR:PORT] [--speedup N]\n"
             "                      [MISSION.waypoints | MISSION.plan]\n");
     return 2;
 }
@@ -521,6 +629,8 @@ int main(int argc, char **argv)
     memset(&g, 0, sizeof(g));
     g.sim = true;
     g.overrun_task = -1;
+    g.link_fd = -1;
+    g.speedup = -1.0; /* not given */
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = (i + 1 < argc) ? argv[i + 1] : NULL;
@@ -555,6 +665,17 @@ int main(int argc, char **argv)
                 return usage();
             }
             i++;
+        } else if ((strcmp(a, "--mavlink") == 0) && (val != NULL)) {
+            if ((g.link_fd >= 0) || !link_open(&g, val)) {
+                return usage();
+            }
+            i++;
+        } else if ((strcmp(a, "--speedup") == 0) && (val != NULL)) {
+            g.speedup = strtod(val, NULL);
+            if (!(g.speedup > 0.0) || !(g.speedup <= 1000.0)) {
+                return usage();
+            }
+            i++;
         } else if ((strcmp(a, "--wind") == 0) && (val != NULL)) {
             if (sscanf(val, "%lf,%lf", &wind_n, &wind_e) != 2) {
                 return usage();
@@ -566,9 +687,21 @@ int main(int argc, char **argv)
             return usage();
         }
     }
-    if ((mission_path == NULL) == !builtin) {
+    if ((mission_path != NULL) && builtin) {
         fprintf(stderr, "sitl: give a mission file or --builtin (not both)\n");
         return usage();
+    }
+    if ((mission_path == NULL) && !builtin && (g.link_fd < 0)) {
+        fprintf(stderr, "sitl: give a mission file or --builtin (or --mavlink: start with none)\n");
+        return usage();
+    }
+    if ((g.speedup > 0.0) && !g.sim) {
+        fprintf(stderr,
+                "sitl: --speedup paces simulated time; --realtime runs on the wall clock\n");
+        return usage();
+    }
+    if (g.speedup < 0.0) {
+        g.speedup = (g.link_fd >= 0) ? 1.0 : 0.0;
     }
     if (log_path != NULL) {
         g.log = fopen(log_path, "wb");
@@ -593,7 +726,7 @@ int main(int argc, char **argv)
         ncmds = (int)veh_builtin_mission_len;
         memcpy(cmds, veh_builtin_mission, (size_t)ncmds * sizeof(cmds[0]));
         veh_run_home(&home, &cmds[0]);
-    } else {
+    } else if (mission_path != NULL) {
         ncmds = load_file(mission_path, cmds, &home);
         if (ncmds < 0) {
             return 2;
@@ -606,13 +739,13 @@ int main(int argc, char **argv)
     memset(&plat, 0, sizeof(plat));
     plat.console = cb_console;
     plat.log_sink = cb_log_sink;
-    plat.telem_write = cb_telem;
     plat.gcs_poll = cb_gcs_poll;
     plat.task_work = g.sim ? cb_task_work : NULL;
     plat.status_lines = !quiet;
     g.run.timeout_us = run_timeout_us(timeout_s);
     g.run.settle_us = SETTLE_US;
     g.run.max_ticks = max_ticks;
+    g.run.gcs_session = g.link_fd >= 0;
 
     /* plat.ctx: the world, the first member of g */
     st = veh_run_start(&g.run, &plat, &g.world, &home, cmds, (uint16_t)ncmds, &bad);
@@ -650,6 +783,15 @@ int main(int argc, char **argv)
         veh_printf("fault injection: %s takes %u us more per run\n", g_overrun_name,
                    (unsigned)g.overrun_us);
     }
+    if (g.link_fd >= 0) {
+        char ip[INET_ADDRSTRLEN];
+        veh_printf("MAVLink: udp to %s:%u, %s\n",
+                   inet_ntop(AF_INET, &g.gcs.sin_addr, ip, sizeof(ip)),
+                   (unsigned)ntohs(g.gcs.sin_port),
+                   g.sim ? "simulated time paced to the wall clock" : "real time");
+        (void)signal(SIGINT, on_signal);
+        (void)signal(SIGTERM, on_signal);
+    }
 
     if (!g.sim) {
         mt_posix_metronome_init(&g.met, g.period_us);
@@ -671,6 +813,14 @@ int main(int argc, char **argv)
         if (g.trace != NULL) {
             trace_tick_end(max_ticks);
         }
+        link_pump(&g);
+        if (g.sim && (g.speedup > 0.0)) {
+            pace(&g, w0, wall_s);
+        }
+        if (g_interrupted != 0) {
+            g.run.reason = "interrupted (signal)";
+            break;
+        }
         if (!veh_run_after_tick(&g.run, &g.world)) {
             break;
         }
@@ -686,6 +836,13 @@ int main(int argc, char **argv)
     if (g.overrun_task >= 0) {
         veh_printf("fault injection: %llu runs of %s overran by %u us\n",
                    (unsigned long long)g.overrun_runs, g_overrun_name, (unsigned)g.overrun_us);
+    }
+    if (g.link_fd >= 0) {
+        veh_printf("MAVLink udp: %llu bytes received, %u datagrams dropped (receive ring full), "
+                   "%llu bytes sent, %u datagrams refused\n",
+                   (unsigned long long)g.link_rx_bytes, (unsigned)g.link_rx_dropped,
+                   (unsigned long long)g.link_tx_bytes, (unsigned)g.link_tx_errors);
+        (void)close(g.link_fd);
     }
     if (g.trace != NULL) {
         fclose(g.trace);

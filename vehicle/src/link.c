@@ -1,0 +1,507 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/**
+ * @file link.c
+ * @brief The ground-station link: MAVLink 2 (ardupilotmega dialect, C headers
+ *        generated at build time by pymavlink's mavgen) over two SPSC byte
+ *        rings that the deployment connects to its socket or UART.
+ *
+ * veh_link_receive (gcs_update, 400 Hz) parses what the ground station sent,
+ * answers the parameter protocol and sends the events (MISSION_ITEM_REACHED,
+ * every console line as STATUSTEXT), one per run; veh_link_stream
+ * (telemetry_send, 10 Hz) sends the periodic streams, at most three messages
+ * per run. Nothing is dropped silently: a message that does not fit in the
+ * transmit ring is counted (veh_counters_t.telem_full), a console line
+ * overwritten before it was sent is counted (said_lost), a frame the parser
+ * drops is counted (link_rx_errors, also SYS_STATUS.errors_comm), and every
+ * byte received outside a valid frame shows as link_rx_bytes -
+ * link_rx_frame_bytes.
+ *
+ * Identity and modes (documented in vehicle/README.md): HEARTBEAT says a
+ * quadrotor (MAV_TYPE_QUADROTOR) with an ArduPilot-style autopilot
+ * (MAV_AUTOPILOT_ARDUPILOTMEGA), so ground stations name the modes with
+ * ArduCopter's custom-mode numbers: STANDBY -> STABILIZE (0), AUTO -> AUTO (3),
+ * HOLD -> LOITER (5), LAND -> LAND (9).
+ */
+#include <string.h>
+
+#include "veh_int.h"
+
+/* the generated headers: build output ($(BUILD)/mavlink), included as system headers */
+#include "ardupilotmega/mavlink.h"
+
+#define LINK_COMPID MAV_COMP_ID_AUTOPILOT1
+#define LINK_CHAN MAVLINK_COMM_0
+#define LINK_RX_PER_RUN 280u /* bytes parsed per gcs_update: one full MAVLink 2 frame */
+
+typedef struct {
+    mt_bring_t rx;
+    uint8_t rx_store[VEH_LINK_RX_BYTES];
+    mt_bring_t tx;
+    uint8_t tx_store[VEH_LINK_TX_BYTES];
+    mavlink_message_t rx_msg; /* the parser's frame under construction */
+    mavlink_status_t rx_status;
+    uint32_t stream_runs;  /* telemetry_send runs */
+    uint32_t said_sent;    /* console lines handled (sent or lost) */
+    uint32_t reached_sent; /* waypoints reported (MISSION_ITEM_REACHED) */
+    uint16_t param_next;   /* next index of a PARAM_REQUEST_LIST answer; VEH_NPARAMS: idle */
+    bool gcs_seen;         /* a ground station's HEARTBEAT has come in */
+} veh_link_t;
+
+static veh_link_t g_link;
+
+/* ---- parameters ------------------------------------------------------------------------ */
+
+typedef struct {
+    const char *name; /* ArduPilot's name for the same setting */
+    uint8_t type;     /* MAV_PARAM_TYPE_* it is announced with */
+    float min;
+    float max;
+} veh_param_def_t;
+
+/* Index order is PARAM_VALUE's param_index. */
+static const veh_param_def_t k_params[VEH_NPARAMS] = {
+    {"SYSID_THISMAV", MAV_PARAM_TYPE_INT16, 1.0f, 255.0f},
+    {"WPNAV_SPEED", MAV_PARAM_TYPE_REAL32, 50.0f, 1500.0f},
+};
+
+static float param_get(const veh_t *v, uint32_t i)
+{
+    return (i == VEH_PARAM_SYSID) ? (float)v->par.sysid : v->par.wpnav_speed_cms;
+}
+
+static void param_set(veh_t *v, uint32_t i, float x)
+{
+    if (i == VEH_PARAM_SYSID) {
+        v->par.sysid = (uint8_t)x;
+    } else {
+        v->par.wpnav_speed_cms = x;
+    }
+    v->par.gen[i]++;
+}
+
+/* Index of the parameter named id (16 bytes, NUL-terminated unless all 16 are used), or
+ * VEH_NPARAMS. */
+static uint32_t param_find(const char id[16])
+{
+    uint32_t i;
+
+    for (i = 0u; i < VEH_NPARAMS; i++) {
+        size_t n = strlen(k_params[i].name);
+        if ((memcmp(id, k_params[i].name, n) == 0) && ((n == 16u) || (id[n] == '\0'))) {
+            return i;
+        }
+    }
+    return VEH_NPARAMS;
+}
+
+void veh_params_default(veh_params_t *p)
+{
+    p->sysid = 1u;
+    p->wpnav_speed_cms = 500.0f;
+    (void)memset(p->gen, 0, sizeof(p->gen));
+}
+
+/* ---- transmit ---------------------------------------------------------------------------- */
+
+/* The frame of m into the transmit ring, whole or not at all (counted). */
+static void send_msg(veh_t *v, const mavlink_message_t *m)
+{
+    uint8_t buf[MAVLINK_MAX_PACKET_LEN];
+    uint16_t n = mavlink_msg_to_send_buffer(buf, m);
+
+    if (mt_bring_space(&g_link.tx) < n) {
+        v->c.telem_full++;
+        return;
+    }
+    (void)mt_bring_write(&g_link.tx, buf, n);
+    v->c.telem_packets++;
+    v->c.telem_bytes += n;
+}
+
+static uint32_t boot_ms(void)
+{
+    return (uint32_t)((veh_now() - veh_boot_us()) / 1000u);
+}
+
+static uint32_t custom_mode(veh_mode_t m)
+{
+    switch (m) {
+    case VEH_MODE_AUTO: return (uint32_t)COPTER_MODE_AUTO;
+    case VEH_MODE_HOLD: return (uint32_t)COPTER_MODE_LOITER;
+    case VEH_MODE_LAND: return (uint32_t)COPTER_MODE_LAND;
+    case VEH_MODE_STANDBY:
+    default: return (uint32_t)COPTER_MODE_STABILIZE;
+    }
+}
+
+static void send_heartbeat(veh_t *v)
+{
+    mavlink_message_t m;
+    uint8_t base = (uint8_t)(MAV_MODE_FLAG_CUSTOM_MODE_ENABLED | MAV_MODE_FLAG_STABILIZE_ENABLED);
+    uint8_t state = (uint8_t)MAV_STATE_STANDBY;
+
+    if (v->fl.mode == VEH_MODE_AUTO) {
+        base = (uint8_t)(base | MAV_MODE_FLAG_GUIDED_ENABLED | MAV_MODE_FLAG_AUTO_ENABLED);
+    }
+    if (v->fl.armed) {
+        base = (uint8_t)(base | MAV_MODE_FLAG_SAFETY_ARMED);
+        state = (uint8_t)MAV_STATE_ACTIVE;
+    }
+    if (v->crashed) {
+        state = (uint8_t)MAV_STATE_EMERGENCY;
+    }
+    (void)mavlink_msg_heartbeat_pack_chan(
+        v->par.sysid, LINK_COMPID, LINK_CHAN, &m, (uint8_t)MAV_TYPE_QUADROTOR,
+        (uint8_t)MAV_AUTOPILOT_ARDUPILOTMEGA, base, custom_mode(v->fl.mode), state);
+    send_msg(v, &m);
+}
+
+#define SENSORS                                                                                \
+    ((uint32_t)MAV_SYS_STATUS_SENSOR_3D_GYRO | (uint32_t)MAV_SYS_STATUS_SENSOR_3D_ACCEL |      \
+     (uint32_t)MAV_SYS_STATUS_SENSOR_ABSOLUTE_PRESSURE | (uint32_t)MAV_SYS_STATUS_SENSOR_GPS | \
+     (uint32_t)MAV_SYS_STATUS_SENSOR_BATTERY)
+
+static void send_sys_status(veh_t *v, const veh_estimate_msg_t *est)
+{
+    mavlink_message_t m;
+    uint32_t health =
+        (uint32_t)MAV_SYS_STATUS_SENSOR_3D_GYRO | (uint32_t)MAV_SYS_STATUS_SENSOR_3D_ACCEL;
+    float volts = vm_clamp(veh_battery_volts(v), 0.0f, 60.0f);
+    float amps = vm_clamp(veh_battery_amps(v), 0.0f, 300.0f);
+
+    if (est->baro_ok) {
+        health |= (uint32_t)MAV_SYS_STATUS_SENSOR_ABSOLUTE_PRESSURE;
+    }
+    if (est->pos_ok) {
+        health |= (uint32_t)MAV_SYS_STATUS_SENSOR_GPS;
+    }
+    if (veh_battery_ok(v)) {
+        health |= (uint32_t)MAV_SYS_STATUS_SENSOR_BATTERY;
+    }
+    (void)mavlink_msg_sys_status_pack_chan(
+        v->par.sysid, LINK_COMPID, LINK_CHAN, &m, SENSORS, SENSORS, health,
+        (uint16_t)mt_sched_load_permille(&v->sched), (uint16_t)lroundf(volts * 1000.0f),
+        (int16_t)lroundf(amps * 100.0f), -1, 0u,
+        (uint16_t)((v->c.link_rx_errors > 65535u) ? 65535u : v->c.link_rx_errors), 0u, 0u, 0u, 0u,
+        0u, 0u, 0u);
+    send_msg(v, &m);
+}
+
+static void send_attitude(veh_t *v, const veh_estimate_msg_t *est)
+{
+    mavlink_message_t m;
+
+    (void)mavlink_msg_attitude_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m, boot_ms(),
+                                         est->att[0], est->att[1], est->att[2], est->rates[0],
+                                         est->rates[1], est->rates[2]);
+    send_msg(v, &m);
+}
+
+static int16_t cms(float mps)
+{
+    return (int16_t)lroundf(vm_clamp(mps, -300.0f, 300.0f) * 100.0f);
+}
+
+static uint16_t centideg(float rad)
+{
+    long d = lroundf(vm_wrap_2pi(rad) * VM_RAD2DEG * 100.0f);
+    return (uint16_t)((d >= 36000L) ? 0L : d);
+}
+
+static void send_global_position(veh_t *v, const veh_estimate_msg_t *est)
+{
+    mavlink_message_t m;
+    int32_t lat;
+    int32_t lon;
+    int32_t rel_mm = (int32_t)lroundf(-est->pos[2] * 1000.0f);
+
+    vm_ll_from_ne(v->home.lat, v->home.lon, est->pos[0], est->pos[1], &lat, &lon);
+    (void)mavlink_msg_global_position_int_pack_chan(
+        v->par.sysid, LINK_COMPID, LINK_CHAN, &m, boot_ms(), lat, lon, v->home.alt_cm * 10 + rel_mm,
+        rel_mm, cms(est->vel[0]), cms(est->vel[1]), cms(est->vel[2]), centideg(est->att[2]));
+    send_msg(v, &m);
+}
+
+static void send_gps_raw(veh_t *v)
+{
+    mavlink_message_t m;
+    const veh_gps_fix_t *f = &v->gps.fix;
+    float gs = vm_norm2(f->vel[0], f->vel[1]);
+    uint16_t cog = (gs > 0.2f) ? centideg(atan2f(f->vel[1], f->vel[0])) : UINT16_MAX;
+
+    (void)mavlink_msg_gps_raw_int_pack_chan(
+        v->par.sysid, LINK_COMPID, LINK_CHAN, &m, f->t_us, f->fix, f->lat, f->lon, f->alt_cm * 10,
+        UINT16_MAX, UINT16_MAX, (uint16_t)lroundf(vm_clamp(gs, 0.0f, 600.0f) * 100.0f), cog,
+        f->sats, 0, 0u, 0u, 0u, 0u, 0u);
+    send_msg(v, &m);
+}
+
+/* MISSION_CURRENT as ArduPilot fills it: total excludes home (item 0); the state from the
+ * sequencer's; mode 1 in AUTO, 2 otherwise. */
+static void send_mission_current(veh_t *v)
+{
+    mavlink_message_t m;
+    const mt_mission_t *mi = &v->mission;
+    uint8_t state;
+    uint16_t total = (mi->total > 0u) ? (uint16_t)(mi->total - 1u) : 0u;
+    uint16_t seq = (mi->nav != MT_MISSION_NONE) ? mi->nav : 0u;
+
+    if (mi->total <= 1u) {
+        state = (uint8_t)MISSION_STATE_NO_MISSION;
+    } else if (mi->state == MT_MISSION_RUNNING) {
+        state = (uint8_t)MISSION_STATE_ACTIVE;
+    } else if (mi->state == MT_MISSION_COMPLETE) {
+        state = (uint8_t)MISSION_STATE_COMPLETE;
+    } else {
+        state = (uint8_t)MISSION_STATE_NOT_STARTED;
+    }
+    (void)mavlink_msg_mission_current_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m, seq,
+                                                total, state,
+                                                (v->fl.mode == VEH_MODE_AUTO) ? 1u : 2u);
+    send_msg(v, &m);
+}
+
+/* MISSION_ITEM_REACHED for the newest nav command verified, once; false: nothing new. */
+static bool send_reached(veh_t *v)
+{
+    mavlink_message_t m;
+
+    if (g_link.reached_sent == v->c.wps_reached) {
+        return false;
+    }
+    g_link.reached_sent = v->c.wps_reached;
+    (void)mavlink_msg_mission_item_reached_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m,
+                                                     v->au.reached_index);
+    send_msg(v, &m);
+    return true;
+}
+
+/* A console line's severity: warnings and refusals above plain information. */
+static uint8_t severity_of(const char *text)
+{
+    if ((strstr(text, "refused") != NULL) || (strstr(text, "rejected") != NULL) ||
+        (strstr(text, "low") != NULL) || (strstr(text, "lost") != NULL)) {
+        return (uint8_t)MAV_SEVERITY_WARNING;
+    }
+    if (strstr(text, "crash") != NULL) {
+        return (uint8_t)MAV_SEVERITY_CRITICAL;
+    }
+    return (uint8_t)MAV_SEVERITY_INFO;
+}
+
+/* One console line as STATUSTEXT: up to 50 characters in one message (id 0); a longer line
+ * in chunks of 50 with the same non-zero id and chunk_seq 0, 1, ..., the last one shorter
+ * than 50 (NUL-terminated; empty when the length is a multiple of 50), so the ground station
+ * can reassemble it. */
+static void send_line(veh_t *v, uint32_t seq, const char *text)
+{
+    const size_t w = MAVLINK_MSG_STATUSTEXT_FIELD_TEXT_LEN;
+    size_t len = strlen(text);
+    size_t off = 0u;
+    uint16_t id = (len <= w) ? 0u : (uint16_t)((seq % 65535u) + 1u);
+    uint8_t sev = severity_of(text);
+    uint8_t chunk = 0u;
+    size_t n;
+
+    do {
+        char part[MAVLINK_MSG_STATUSTEXT_FIELD_TEXT_LEN + 1u];
+        mavlink_message_t m;
+
+        n = ((len - off) > w) ? w : (len - off);
+        (void)memset(part, 0, sizeof(part));
+        (void)memcpy(part, &text[off], n);
+        (void)mavlink_msg_statustext_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m, sev, part,
+                                               id, chunk);
+        send_msg(v, &m);
+        off += n;
+        chunk++;
+    } while ((id != 0u) && (n == w));
+}
+
+/* The oldest console line not sent yet, as STATUSTEXT; lines overwritten before their turn
+ * are counted as lost (all of them at once). */
+static void send_said(veh_t *v)
+{
+    char text[VEH_SAID_TEXT];
+    uint32_t said = veh_console_said_count();
+
+    if ((said - g_link.said_sent) > VEH_SAID_KEEP) {
+        v->c.said_lost += (said - g_link.said_sent) - VEH_SAID_KEEP;
+        g_link.said_sent = said - VEH_SAID_KEEP;
+    }
+    if (g_link.said_sent == said) {
+        return;
+    }
+    g_link.said_sent++;
+    if (veh_console_said(g_link.said_sent, text)) {
+        send_line(v, g_link.said_sent, text);
+    }
+}
+
+static void send_param(veh_t *v, uint32_t i)
+{
+    mavlink_message_t m;
+    char id[17];
+
+    (void)memset(id, 0, sizeof(id));
+    (void)strncpy(id, k_params[i].name, 16u);
+    (void)mavlink_msg_param_value_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m, id,
+                                            param_get(v, i), k_params[i].type,
+                                            (uint16_t)VEH_NPARAMS, (uint16_t)i);
+    send_msg(v, &m);
+}
+
+/* ---- receive (a target of 0 is a broadcast) ----------------------------------------------------------------------------- */
+
+static bool for_us(const veh_t *v, uint8_t sys, uint8_t comp)
+{
+    return ((sys == v->par.sysid) || (sys == 0u)) && ((comp == LINK_COMPID) || (comp == 0u));
+}
+
+static void on_param_request_read(veh_t *v, const mavlink_message_t *m)
+{
+    mavlink_param_request_read_t r;
+    uint32_t i;
+
+    mavlink_msg_param_request_read_decode(m, &r);
+    if (!for_us(v, r.target_system, r.target_component)) {
+        return;
+    }
+    i = (r.param_index >= 0) ? (uint32_t)r.param_index : param_find(r.param_id);
+    if (i < VEH_NPARAMS) {
+        send_param(v, i);
+    } else {
+        v->c.link_param_unknown++;
+    }
+}
+
+/* PARAM_SET: a known name with a value in range is set; the answer is always the PARAM_VALUE
+ * now in force (the old value when refused), as ArduPilot and the protocol do. */
+static void on_param_set(veh_t *v, const mavlink_message_t *m)
+{
+    mavlink_param_set_t r;
+    uint32_t i;
+    float x;
+
+    mavlink_msg_param_set_decode(m, &r);
+    if (!for_us(v, r.target_system, r.target_component)) {
+        return;
+    }
+    i = param_find(r.param_id);
+    if (i >= VEH_NPARAMS) {
+        v->c.link_param_unknown++;
+        return;
+    }
+    x = r.param_value;
+    if ((k_params[i].type != MAV_PARAM_TYPE_REAL32) && isfinite(x)) {
+        x = roundf(x);
+    }
+    if (isfinite(x) && (x >= k_params[i].min) && (x <= k_params[i].max)) {
+        param_set(v, i, x);
+        veh_say("param: %s set to %s", k_params[i].name, vp_float((char[24]){0}, 24u, x, 2u));
+    } else {
+        v->c.link_param_refused++;
+        veh_say("param: %s refused (range %s .. %s)", k_params[i].name,
+                vp_float((char[24]){0}, 24u, k_params[i].min, 0u),
+                vp_float((char[24]){0}, 24u, k_params[i].max, 0u));
+    }
+    send_param(v, i);
+}
+
+static void on_message(veh_t *v, const mavlink_message_t *m)
+{
+    v->c.link_rx_msgs++;
+    switch (m->msgid) {
+    case MAVLINK_MSG_ID_HEARTBEAT:
+        if (!g_link.gcs_seen) {
+            g_link.gcs_seen = true;
+            veh_say("link: ground station %u/%u connected", (unsigned)m->sysid,
+                    (unsigned)m->compid);
+        }
+        break;
+    case MAVLINK_MSG_ID_PARAM_REQUEST_LIST: {
+        mavlink_param_request_list_t r;
+        mavlink_msg_param_request_list_decode(m, &r);
+        if (for_us(v, r.target_system, r.target_component)) {
+            g_link.param_next = 0u;
+        }
+        break;
+    }
+    case MAVLINK_MSG_ID_PARAM_REQUEST_READ: on_param_request_read(v, m); break;
+    case MAVLINK_MSG_ID_PARAM_SET: on_param_set(v, m); break;
+    default: v->c.link_rx_ignored++; break;
+    }
+}
+
+/* ---- entry points ------------------------------------------------------------------------ */
+
+void veh_link_init(void)
+{
+    (void)memset(&g_link, 0, sizeof(g_link));
+    (void)mt_bring_init(&g_link.rx, g_link.rx_store, (uint32_t)sizeof(g_link.rx_store));
+    (void)mt_bring_init(&g_link.tx, g_link.tx_store, (uint32_t)sizeof(g_link.tx_store));
+    g_link.param_next = VEH_NPARAMS;
+}
+
+mt_bring_t *veh_link_rx(void)
+{
+    return &g_link.rx;
+}
+
+mt_bring_t *veh_link_tx(void)
+{
+    return &g_link.tx;
+}
+
+void veh_link_receive(veh_t *v)
+{
+    uint8_t buf[LINK_RX_PER_RUN];
+    uint32_t n = mt_bring_read(&g_link.rx, buf, (uint32_t)sizeof(buf));
+    uint32_t i;
+
+    v->c.link_rx_bytes += n;
+    for (i = 0u; i < n; i++) {
+        mavlink_message_t m;
+        mavlink_status_t st;
+        uint8_t r = mavlink_frame_char_buffer(&g_link.rx_msg, &g_link.rx_status, buf[i], &m, &st);
+        if (r == MAVLINK_FRAMING_OK) {
+            v->c.link_rx_frame_bytes += mavlink_msg_get_send_buffer_length(&m);
+            on_message(v, &m);
+        } else if (r != MAVLINK_FRAMING_INCOMPLETE) {
+            v->c.link_rx_errors++; /* a whole frame dropped: bad CRC or signature */
+        }
+    }
+    /* one answer or event per run, so a burst costs no run more than one message (two
+     * STATUSTEXT chunks for a long line): a parameter of a list, else a reached item, else
+     * a console line */
+    if (g_link.param_next < VEH_NPARAMS) {
+        send_param(v, g_link.param_next);
+        g_link.param_next++;
+    } else if (!send_reached(v)) {
+        send_said(v);
+    }
+}
+
+void veh_link_stream(veh_t *v)
+{
+    veh_estimate_msg_t est;
+    uint32_t r = g_link.stream_runs;
+
+    g_link.stream_runs++;
+    veh_latest(&v->gcs.est_sub, &est, (uint32_t)sizeof(est));
+    /* 10 Hz: ATTITUDE; 5 Hz: GLOBAL_POSITION_INT and GPS_RAW_INT in turn; 1 Hz: HEARTBEAT,
+     * SYS_STATUS, MISSION_CURRENT on different runs; events: MISSION_ITEM_REACHED and
+     * the console lines */
+    send_attitude(v, &est);
+    if ((r % 2u) == 0u) {
+        send_global_position(v, &est);
+    } else {
+        send_gps_raw(v);
+    }
+    switch (r % 10u) {
+    case 0u: send_heartbeat(v); break;
+    case 3u: send_sys_status(v, &est); break;
+    case 6u: send_mission_current(v); break;
+    default: break;
+    }
+}
