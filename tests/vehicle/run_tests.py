@@ -338,9 +338,12 @@ def t_sched_nominal(S):
     check(rc == 0 and "verdict: SCHEDULABLE" in out, "nominal table: rc %d\n%s" % (rc, out))
     check(all(t["miss"] == "never" for t in res["tasks"]), "verdicts")
     late = {t["name"]: t["lateness_ticks"] for t in res["tasks"] if t["lateness_ticks"]}
-    # the status line is the last task: when every task and every worst case coincide (the
-    # hyperperiod tick) it can be left for the next tick; every other task is never late
-    check(late == {"status_line": 1} and res["aligned_skip_possible"] is True, "lateness %s" % late)
+    # with the costs measured on the firmware (wall times, MAVLink link included): the tasks
+    # after the two event spikes (gcs_update arming, mission_update starting a command) can be
+    # left for the next tick when the spikes coincide, the status line (last, 1 Hz) for two;
+    # the tasks before them are never late
+    check(late == {"mission_update": 1, "telemetry_send": 1, "log_write": 1, "housekeeping": 1,
+                   "status_line": 2} and res["aligned_skip_possible"] is True, "lateness %s" % late)
     check(res["fast_end_max_us"] <= res["period_us"], "fast loop")
     S.nominal = res
 
