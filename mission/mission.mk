@@ -13,7 +13,7 @@
 #   make mav-cmds          regenerate the mission command tables from MAVLink's XML
 #   make check-mav-cmds    fail (with a diff) when the committed tables are stale (make test)
 
-MISSION_HOST_SRC := $(wildcard mission/wpl.c mission/plan.c mission/mfile.c mission/report.c)
+MISSION_HOST_SRC := $(wildcard mission/item.c mission/wpl.c mission/plan.c mission/mfile.c mission/report.c)
 # .plan files are JSON, read and written with cJSON (Debian libcjson-dev, tools/bootstrap.sh test)
 MISSION_LIBS := -lcjson
 MISSION_TEST_SRC := $(wildcard tests/test_mission*.cpp)

@@ -5,7 +5,7 @@
  */
 #include "wpl.h"
 
-#include "mav_cmd_names.h"
+#include "item.h"
 
 #include <errno.h>
 #include <math.h>
@@ -373,125 +373,26 @@ size_t mt_wpl_write(const mt_wpl_item_t *items, size_t n, char *out, size_t cap)
     return used;
 }
 
-/* The generated row of a command id (mav_cmd_names.h, sorted by id), or NULL. */
-static const mt_mav_cmd_name_t *cmd_row(uint32_t id)
-{
-    size_t lo = 0u, hi = MT_MAV_CMD_NAMES_COUNT;
-
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2u;
-        if (k_mav_cmd_names[mid].id == id) {
-            return &k_mav_cmd_names[mid];
-        }
-        if (k_mav_cmd_names[mid].id < id) {
-            lo = mid + 1u;
-        } else {
-            hi = mid;
-        }
-    }
-    return NULL;
-}
-
-int mt_wpl_frame_ignored(uint32_t command)
-{
-    const mt_mav_cmd_name_t *row;
-    uint8_t kind;
-
-    if (command > 0xFFFFu) {
-        return 0;
-    }
-    kind = mt_mission_kind_of((uint16_t)command);
-    if (kind != MT_MISSION_KIND_DO && kind != MT_MISSION_KIND_JUMP && kind != MT_MISSION_KIND_TAG) {
-        return 0; /* nav commands, home, unknown ids */
-    }
-    /* do commands with a location (the kernel's F_LOC, MAVLink's hasLocation): frame matters */
-    row = cmd_row(command);
-    return (row != NULL && row->location != 0u) ? 0 : 1;
-}
-
-/* Frames the kernel accepts for some command (mission_check.c frame_ok). */
-static int frame_known(uint32_t frame)
-{
-    return frame == 0u || frame == 2u || frame == 3u || frame == 5u || frame == 6u || frame == 10u ||
-           frame == 11u;
-}
-
-/* round(v * scale) into int32, if finite and in range. */
-static int to_fixed(double v, double scale, double limit, int32_t *out)
-{
-    double s;
-
-    if (isfinite(v) == 0) {
-        return 0;
-    }
-    s = v * scale;
-    if (!(s > -limit && s < limit)) {
-        return 0;
-    }
-    *out = (int32_t)llround(s);
-    return 1;
-}
-
 mt_status_t mt_wpl_to_cmd(const mt_wpl_item_t *it, mt_mission_cmd_t *out, mt_wpl_error_t *err)
 {
-    static const char *const names[7] = {"param1", "param2", "param3", "param4", "x (latitude)",
-                                         "y (longitude)", "z (altitude)"};
-    uint32_t idx = it->seq;
-    int f;
+    mt_item_fault_t f;
+    mt_status_t st = mt_item_to_cmd(it, out, &f);
+    const char *name = mt_item_field_name(f.field);
 
-    memset(out, 0, sizeof *out);
-    if (it->command > 0xFFFFu) {
-        mt_wpl_set_error(err, MT_E_MISSION_CMD, it->line, 4u, idx,
-                         "command: %u is not a MAV_CMD number", (unsigned)it->command);
-        return MT_E_MISSION_CMD;
+    if (st == MT_OK) {
+        return MT_OK;
     }
-    if (it->frame > 0xFFu) {
-        mt_wpl_set_error(err, MT_E_MISSION_FRAME, it->line, 3u, idx,
-                         "frame: %u is not a MAV_FRAME number", (unsigned)it->frame);
-        return MT_E_MISSION_FRAME;
+    if (f.why == MT_ITEM_NOT_A_CMD) {
+        mt_wpl_set_error(err, st, it->line, f.field, it->seq, "command: %u is not a MAV_CMD number",
+                         (unsigned)it->command);
+    } else if (f.why == MT_ITEM_NOT_A_FRAME) {
+        mt_wpl_set_error(err, st, it->line, f.field, it->seq, "frame: %u is not a MAV_FRAME number",
+                         (unsigned)it->frame);
+    } else if (f.field <= 8u) {
+        mt_wpl_set_error(err, st, it->line, f.field, it->seq, "%s: %s (limit: finite, |v| < 2147483.647)",
+                         name, mt_item_why_str(f.why));
+    } else {
+        mt_wpl_set_error(err, st, it->line, f.field, it->seq, "%s: %s", name, mt_item_why_str(f.why));
     }
-    out->id = (uint16_t)it->command;
-    /* a frame ArduPilot ignores is given to the kernel as MISSION (see wpl.h) */
-    out->frame = (mt_wpl_frame_ignored(it->command) && !frame_known(it->frame)) ? 2u : (uint8_t)it->frame;
-    out->options = (uint8_t)(it->autocontinue & 1u);
-    for (f = 0; f < 4; f++) {
-        if (isnan(it->p[f])) {
-            out->param[f] = MT_MISSION_PARAM_NAN;
-            continue;
-        }
-        if (!to_fixed(it->p[f], (double)MT_MISSION_MILLI, 2147483647.0, &out->param[f]) ||
-            out->param[f] == MT_MISSION_PARAM_NAN) {
-            mt_wpl_set_error(err, MT_E_MISSION_PARAM, it->line, 5u + (uint32_t)f, idx,
-                             "%s: %s (limit: finite, |v| < 2147483.647)", names[f],
-                             isinf(it->p[f]) ? "infinite" : "out of range");
-            return MT_E_MISSION_PARAM;
-        }
-    }
-    for (f = 4; f < 7; f++) {
-        int32_t v = 0;
-        double scale = (f < 6) ? 1e7 : 100.0;
-        if (isnan(it->p[f]) || !to_fixed(it->p[f], scale, 2147483647.0, &v)) {
-            mt_wpl_set_error(err, MT_E_MISSION_PARAM, it->line, 5u + (uint32_t)f, idx, "%s: %s",
-                             names[f],
-                             isnan(it->p[f])   ? "NaN is not allowed"
-                             : isinf(it->p[f]) ? "infinite"
-                                               : "out of range");
-            return MT_E_MISSION_PARAM;
-        }
-        if (f == 4) {
-            out->x = v;
-        } else if (f == 5) {
-            out->y = v;
-        } else {
-            out->z = v;
-        }
-    }
-    return MT_OK;
-}
-
-const char *mt_wpl_cmd_name(uint32_t id)
-{
-    const mt_mav_cmd_name_t *row = cmd_row(id);
-
-    return row != NULL ? row->name : NULL;
+    return st;
 }
