@@ -19,7 +19,7 @@ import time
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, ".tools", "pymavlink"))
 os.environ["MAVLINK20"] = "1"
-from pymavlink import mavutil  # noqa: E402
+from pymavlink import mavutil, mavwp  # noqa: E402
 from pymavlink.dialects.v20 import ardupilotmega as mav  # noqa: E402
 
 GCS_SYSID = 255
@@ -95,3 +95,68 @@ class Session:
 
     def of(self, mtype):
         return [m for _, m in self.msgs if m.get_type() == mtype]
+
+    # ---- the mission protocol, as a ground station drives it -----------------------------
+
+    def upload(self, items, seconds=30, legacy=False, answer=None):
+        """Upload items (dicts of MISSION_ITEM_INT fields; legacy: as MISSION_ITEM with x and y
+        in degrees). answer(seq) may return the seq to send instead (None: do not answer).
+        Returns (the MISSION_ACK that ends the upload, the seqs the vehicle asked for, in
+        order); self.acks lists every MISSION_ACK seen."""
+        sys_, comp = 1, 1
+        self.conn.mav.mission_count_send(sys_, comp, len(items), mav.MAV_MISSION_TYPE_MISSION)
+        asked = []
+        self.acks = []  # every MISSION_ACK of this upload, INVALID_SEQUENCE ones included
+        end = time.time() + seconds
+        while time.time() < end:
+            m = self.poll()
+            if m is None:
+                continue
+            t = m.get_type()
+            if t == "MISSION_ACK" and m.get_srcSystem() == 1:
+                self.acks.append(m.type)
+                if m.type != mav.MAV_MISSION_INVALID_SEQUENCE:  # that one does not end an upload
+                    return m, asked
+                continue
+            if t == "MISSION_REQUEST_INT":
+                asked.append(m.seq)
+                seq = m.seq if answer is None else answer(m.seq)
+                if seq is None:
+                    continue
+                it = dict(items[seq], seq=seq)
+                if legacy:
+                    self.conn.mav.mission_item_send(sys_, comp, it["seq"], it["frame"], it["command"], 0,
+                                                    it["autocontinue"], it["param1"], it["param2"],
+                                                    it["param3"], it["param4"], it["x"] * 1e-7,
+                                                    it["y"] * 1e-7, it["z"], mav.MAV_MISSION_TYPE_MISSION)
+                else:
+                    self.conn.mav.mission_item_int_send(sys_, comp, it["seq"], it["frame"], it["command"], 0,
+                                                        it["autocontinue"], it["param1"], it["param2"],
+                                                        it["param3"], it["param4"], it["x"], it["y"],
+                                                        it["z"], mav.MAV_MISSION_TYPE_MISSION)
+        raise Timeout("upload: no MISSION_ACK in %d s" % seconds)
+
+    def download(self, seconds=30):
+        """The mission on board: a list of MISSION_ITEM_INT messages."""
+        self.conn.mav.mission_request_list_send(1, 1, mav.MAV_MISSION_TYPE_MISSION)
+        n = self.wait("MISSION_COUNT", seconds=seconds).count
+        items = []
+        for seq in range(n):
+            self.conn.mav.mission_request_int_send(1, 1, seq, mav.MAV_MISSION_TYPE_MISSION)
+            items.append(self.wait("MISSION_ITEM_INT", lambda m, s=seq: m.seq == s, seconds=seconds))
+        self.conn.mav.mission_ack_send(1, 1, mav.MAV_MISSION_ACCEPTED, mav.MAV_MISSION_TYPE_MISSION)
+        return items
+
+
+def wpl_items(path):
+    """A QGC WPL file as MISSION_ITEM_INT fields, read by pymavlink's own loader (mavwp); x and
+    y from the file's text at full precision (1e-7 degree)."""
+    loader = mavwp.MAVWPLoader()
+    loader.load(path)
+    out = []
+    for i in range(loader.count()):
+        w = loader.wp(i)
+        out.append(dict(seq=w.seq, frame=w.frame, command=w.command, autocontinue=w.autocontinue,
+                        param1=w.param1, param2=w.param2, param3=w.param3, param4=w.param4,
+                        x=int(round(w.x * 1e7)), y=int(round(w.y * 1e7)), z=w.z))
+    return out

@@ -12,6 +12,7 @@ summary; exit status 1 when any test fails.
 
 import argparse
 import json
+import math
 import os
 import re
 import struct
@@ -674,6 +675,116 @@ def t_mavlink_no_mission(S, binary=None):
     return s
 
 
+def close_or_nan(a, b):
+    return (math.isnan(a) and math.isnan(b)) or abs(a - b) < 1e-3
+
+
+def same_items(got, want, legacy=False):
+    """Downloaded MISSION_ITEM_INTs against uploaded items (legacy MISSION_ITEM carries x and y
+    as float32 degrees: within 1e-5 degree)."""
+    check(len(got) == len(want), "%d items on board, %d uploaded" % (len(got), len(want)))
+    tol = 100 if legacy else 0
+    for g, w in zip(got, want):
+        check(g.command == w["command"] and g.frame == w["frame"] and g.autocontinue == w["autocontinue"] and
+              abs(g.x - w["x"]) <= tol and abs(g.y - w["y"]) <= tol and abs(g.z - w["z"]) < 1e-3 and
+              all(close_or_nan(getattr(g, "param%d" % k), w["param%d" % k]) for k in range(1, 5)),
+              "item %d: on board %s, uploaded %s" % (g.seq, g, w))
+
+
+def t_mavlink_mission_upload(S):
+    """A mission uploaded by the ground station (MISSION_ITEM_INT, as QGroundControl) is
+    downloaded back item for item and flown exactly as the same file; rejected uploads get the
+    matching MAV_MISSION_RESULT and a STATUSTEXT with the item, and leave the mission on board
+    as it was; MISSION_ITEM (float, older ground stations), clear and set-current."""
+    g, sess = mavlink_session(S, ["--speedup", "10"])
+    mav = g.mav
+    plain = g.wpl_items(os.path.join(MISSIONS, "plain.waypoints"))
+    with sess as s:
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        ack, asked = s.upload(plain)
+        check(ack.type == mav.MAV_MISSION_ACCEPTED and asked == list(range(7)), "upload: %s %s" % (ack, asked))
+        same_items(s.download(), plain)
+        s.wait("STATUSTEXT", lambda m: m.text == "mission: complete", seconds=60)
+        s.wait("HEARTBEAT", lambda m: not (m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED))
+        flown = [re.match(r"mission: #(\d+) (\w+) started", t).group(1, 2)
+                 for t in statustext_lines(s.of("STATUSTEXT")) if re.match(r"mission: #\d+ \w+ started", t)]
+        check(flown == [("1", "TAKEOFF"), ("2", "WAYPOINT"), ("3", "WAYPOINT"), ("4", "WAYPOINT"),
+                        ("5", "WAYPOINT"), ("6", "LAND")], "the uploaded mission flown as the file: %s" % flown)
+        # rejected uploads, each leaving plain on board
+        # the file layer rejects an item as it arrives (the NaN altitude: no more requests), the
+        # kernel's check the whole mission once every item is in
+        bad = [("unknown command", 3, dict(command=9999), mav.MAV_MISSION_UNSUPPORTED, list(range(7))),
+               ("NaN altitude", 2, dict(z=float("nan")), mav.MAV_MISSION_INVALID_PARAM7, [0, 1, 2]),
+               ("latitude 95 degrees", 2, dict(x=950000000), mav.MAV_MISSION_INVALID_PARAM5_X, list(range(7))),
+               ("unsupported frame", 4, dict(frame=1), mav.MAV_MISSION_UNSUPPORTED_FRAME, list(range(7)))]
+        for what, i, change, result, want_asked in bad:
+            items = [dict(it) for it in plain]
+            items[i].update(change)
+            ack, asked = s.upload(items)
+            check(ack.type == result and asked == want_asked, "%s: ack %s asked %s" % (what, ack, asked))
+            s.wait("STATUSTEXT", lambda m: m.text.startswith("mission upload rejected: item %d" % i))
+        jump = plain[:6] + [dict(plain[1], command=mav.MAV_CMD_DO_JUMP, frame=2, param1=99.0, param2=1.0,
+                                 x=0, y=0, z=0.0)] + plain[6:]
+        ack, asked = s.upload(jump)
+        check(ack.type == mav.MAV_MISSION_INVALID, "jump to a command that does not exist: %s" % ack)
+        s.wait("STATUSTEXT", lambda m: m.text.startswith("mission upload rejected: item 6: MT_E_MISSION_JUMP"))
+        same_items(s.download(), plain)
+        # the float form of older ground stations
+        jumps = g.wpl_items(os.path.join(MISSIONS, "jumps.waypoints"))
+        ack, asked = s.upload(jumps, legacy=True)
+        check(ack.type == mav.MAV_MISSION_ACCEPTED, "MISSION_ITEM upload: %s" % ack)
+        same_items(s.download(), jumps, legacy=True)
+        s.conn.mav.mission_set_current_send(1, 1, 4)
+        cur = s.wait("MISSION_CURRENT", lambda m: m.seq == 4)
+        check(cur.total == len(jumps) - 1, "MISSION_CURRENT total excludes home: %s" % cur)
+        s.conn.mav.mission_clear_all_send(1, 1, mav.MAV_MISSION_TYPE_MISSION)
+        check(s.wait("MISSION_ACK").type == mav.MAV_MISSION_ACCEPTED, "clear")
+        home = s.download()
+        check(len(home) == 1 and abs(home[0].x - jumps[0]["x"]) <= 100, "home stays after a clear: %s" % home)
+        s.stop()
+    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused = link_counts(s.out)
+    check(full == 0 and lost == 0 and dropped == 0 and ignored == 0, "link counts %s" % (link_counts(s.out),))
+
+
+def t_mavlink_mission_protocol(S):
+    """The vehicle drives an upload as ArduPilot does: it asks again for an item after 1 s and
+    cancels after 8 s without one; an item out of sequence gets INVALID_SEQUENCE and the upload
+    goes on; fences are not supported; a running mission is not replaced (DENIED) nor cleared
+    (ERROR), and keeps flying."""
+    g, sess = mavlink_session(S, ["--speedup", "10"])
+    mav = g.mav
+    plain = g.wpl_items(os.path.join(MISSIONS, "plain.waypoints"))
+    with sess as s:
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        ack, asked = s.upload(plain[:3], answer=lambda seq: None)
+        check(ack.type == mav.MAV_MISSION_OPERATION_CANCELLED and set(asked) == {0} and 7 <= len(asked) <= 10,
+              "timeout: %s after %d requests" % (ack, len(asked)))
+        s.wait("STATUSTEXT", lambda m: m.text.startswith("mission upload cancelled: no item #0"))
+        first = []
+
+        def out_of_order(seq):
+            if seq == 2 and not first:
+                first.append(seq)
+                return 3  # one item ahead
+            return seq
+        ack, asked = s.upload(plain, answer=out_of_order)
+        check(ack.type == mav.MAV_MISSION_ACCEPTED and mav.MAV_MISSION_INVALID_SEQUENCE in s.acks and
+              asked[:4] == [0, 1, 2, 2], "out of sequence: %s %s %s" % (ack, s.acks, asked))
+        s.conn.mav.mission_count_send(1, 1, 2, mav.MAV_MISSION_TYPE_FENCE)
+        check(s.wait("MISSION_ACK").type == mav.MAV_MISSION_UNSUPPORTED, "fence")
+        s.wait("STATUSTEXT", lambda m: m.text.startswith("mission: #2 WAYPOINT started"), seconds=60)
+        ack, asked = s.upload(g.wpl_items(os.path.join(MISSIONS, "hop.waypoints")))
+        check(ack.type == mav.MAV_MISSION_DENIED, "upload during the mission: %s" % ack)
+        s.wait("STATUSTEXT", lambda m: m.text.startswith("mission upload refused: the mission is running"))
+        s.conn.mav.mission_clear_all_send(1, 1, mav.MAV_MISSION_TYPE_MISSION)
+        check(s.wait("MISSION_ACK").type == mav.MAV_MISSION_ERROR, "clear during the mission")
+        same_items(s.download(), plain)
+        s.wait("STATUSTEXT", lambda m: m.text == "mission: complete", seconds=60)
+        s.stop()
+    check([e for e in S_events(s.out) if re.match(r"mission: #\d+ \w+ started", e)][-1].startswith("mission: #6 LAND"),
+          "the first mission flew to its end")
+
+
 def t_mavlink_sanitizers(S):
     """The link's parser and answers under ASan+UBSan: the same session, no report."""
     s = t_mavlink_no_mission(S, binary=S.sitl_asan)
@@ -704,6 +815,8 @@ TESTS = [
     ("mavlink: a ground station watches a flight (streams, parameters, mission)", t_mavlink_flight),
     ("mavlink: no mission, garbage on the link, a second ground station", t_mavlink_no_mission),
     ("mavlink: the same session in the ASan+UBSan build", t_mavlink_sanitizers),
+    ("mavlink: mission upload, download, rejections, clear, set current", t_mavlink_mission_upload),
+    ("mavlink: mission protocol timing, sequence, a running mission kept", t_mavlink_mission_protocol),
 ]
 
 

@@ -24,20 +24,15 @@
  */
 #include <string.h>
 
-#include "veh_int.h"
+#include "link_int.h"
 
-/* the generated headers: build output ($(BUILD)/mavlink), included as system headers */
-#include "ardupilotmega/mavlink.h"
-
-#define LINK_COMPID MAV_COMP_ID_AUTOPILOT1
-#define LINK_CHAN MAVLINK_COMM_0
+#define LINK_COMPID VEH_LINK_COMPID
+#define LINK_CHAN VEH_LINK_CHAN
 #define LINK_RX_PER_RUN 280u /* bytes parsed per gcs_update: one full MAVLink 2 frame */
 
 typedef struct {
     mt_bring_t rx;
     uint8_t rx_store[VEH_LINK_RX_BYTES];
-    mt_bring_t tx;
-    uint8_t tx_store[VEH_LINK_TX_BYTES];
     mavlink_message_t rx_msg; /* the parser's frame under construction */
     mavlink_status_t rx_status;
     uint32_t stream_runs;  /* telemetry_send runs */
@@ -103,26 +98,6 @@ void veh_params_default(veh_params_t *p)
 
 /* ---- transmit ---------------------------------------------------------------------------- */
 
-/* The frame of m into the transmit ring, whole or not at all (counted). */
-static void send_msg(veh_t *v, const mavlink_message_t *m)
-{
-    uint8_t buf[MAVLINK_MAX_PACKET_LEN];
-    uint16_t n = mavlink_msg_to_send_buffer(buf, m);
-
-    if (mt_bring_space(&g_link.tx) < n) {
-        v->c.telem_full++;
-        return;
-    }
-    (void)mt_bring_write(&g_link.tx, buf, n);
-    v->c.telem_packets++;
-    v->c.telem_bytes += n;
-}
-
-static uint32_t boot_ms(void)
-{
-    return (uint32_t)((veh_now() - veh_boot_us()) / 1000u);
-}
-
 static uint32_t custom_mode(veh_mode_t m)
 {
     switch (m) {
@@ -153,7 +128,7 @@ static void send_heartbeat(veh_t *v)
     (void)mavlink_msg_heartbeat_pack_chan(
         v->par.sysid, LINK_COMPID, LINK_CHAN, &m, (uint8_t)MAV_TYPE_QUADROTOR,
         (uint8_t)MAV_AUTOPILOT_ARDUPILOTMEGA, base, custom_mode(v->fl.mode), state);
-    send_msg(v, &m);
+    veh_link_send(v, &m);
 }
 
 #define SENSORS                                                                                \
@@ -184,17 +159,17 @@ static void send_sys_status(veh_t *v, const veh_estimate_msg_t *est)
         (int16_t)lroundf(amps * 100.0f), -1, 0u,
         (uint16_t)((v->c.link_rx_errors > 65535u) ? 65535u : v->c.link_rx_errors), 0u, 0u, 0u, 0u,
         0u, 0u, 0u);
-    send_msg(v, &m);
+    veh_link_send(v, &m);
 }
 
 static void send_attitude(veh_t *v, const veh_estimate_msg_t *est)
 {
     mavlink_message_t m;
 
-    (void)mavlink_msg_attitude_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m, boot_ms(),
-                                         est->att[0], est->att[1], est->att[2], est->rates[0],
-                                         est->rates[1], est->rates[2]);
-    send_msg(v, &m);
+    (void)mavlink_msg_attitude_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m,
+                                         veh_link_boot_ms(), est->att[0], est->att[1], est->att[2],
+                                         est->rates[0], est->rates[1], est->rates[2]);
+    veh_link_send(v, &m);
 }
 
 static int16_t cms(float mps)
@@ -217,9 +192,10 @@ static void send_global_position(veh_t *v, const veh_estimate_msg_t *est)
 
     vm_ll_from_ne(v->home.lat, v->home.lon, est->pos[0], est->pos[1], &lat, &lon);
     (void)mavlink_msg_global_position_int_pack_chan(
-        v->par.sysid, LINK_COMPID, LINK_CHAN, &m, boot_ms(), lat, lon, v->home.alt_cm * 10 + rel_mm,
-        rel_mm, cms(est->vel[0]), cms(est->vel[1]), cms(est->vel[2]), centideg(est->att[2]));
-    send_msg(v, &m);
+        v->par.sysid, LINK_COMPID, LINK_CHAN, &m, veh_link_boot_ms(), lat, lon,
+        v->home.alt_cm * 10 + rel_mm, rel_mm, cms(est->vel[0]), cms(est->vel[1]), cms(est->vel[2]),
+        centideg(est->att[2]));
+    veh_link_send(v, &m);
 }
 
 static void send_gps_raw(veh_t *v)
@@ -233,32 +209,7 @@ static void send_gps_raw(veh_t *v)
         v->par.sysid, LINK_COMPID, LINK_CHAN, &m, f->t_us, f->fix, f->lat, f->lon, f->alt_cm * 10,
         UINT16_MAX, UINT16_MAX, (uint16_t)lroundf(vm_clamp(gs, 0.0f, 600.0f) * 100.0f), cog,
         f->sats, 0, 0u, 0u, 0u, 0u, 0u);
-    send_msg(v, &m);
-}
-
-/* MISSION_CURRENT as ArduPilot fills it: total excludes home (item 0); the state from the
- * sequencer's; mode 1 in AUTO, 2 otherwise. */
-static void send_mission_current(veh_t *v)
-{
-    mavlink_message_t m;
-    const mt_mission_t *mi = &v->mission;
-    uint8_t state;
-    uint16_t total = (mi->total > 0u) ? (uint16_t)(mi->total - 1u) : 0u;
-    uint16_t seq = (mi->nav != MT_MISSION_NONE) ? mi->nav : 0u;
-
-    if (mi->total <= 1u) {
-        state = (uint8_t)MISSION_STATE_NO_MISSION;
-    } else if (mi->state == MT_MISSION_RUNNING) {
-        state = (uint8_t)MISSION_STATE_ACTIVE;
-    } else if (mi->state == MT_MISSION_COMPLETE) {
-        state = (uint8_t)MISSION_STATE_COMPLETE;
-    } else {
-        state = (uint8_t)MISSION_STATE_NOT_STARTED;
-    }
-    (void)mavlink_msg_mission_current_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m, seq,
-                                                total, state,
-                                                (v->fl.mode == VEH_MODE_AUTO) ? 1u : 2u);
-    send_msg(v, &m);
+    veh_link_send(v, &m);
 }
 
 /* MISSION_ITEM_REACHED for the newest nav command verified, once; false: nothing new. */
@@ -272,7 +223,7 @@ static bool send_reached(veh_t *v)
     g_link.reached_sent = v->c.wps_reached;
     (void)mavlink_msg_mission_item_reached_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m,
                                                      v->au.reached_index);
-    send_msg(v, &m);
+    veh_link_send(v, &m);
     return true;
 }
 
@@ -312,7 +263,7 @@ static void send_line(veh_t *v, uint32_t seq, const char *text)
         (void)memcpy(part, &text[off], n);
         (void)mavlink_msg_statustext_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m, sev, part,
                                                id, chunk);
-        send_msg(v, &m);
+        veh_link_send(v, &m);
         off += n;
         chunk++;
     } while ((id != 0u) && (n == w));
@@ -348,7 +299,7 @@ static void send_param(veh_t *v, uint32_t i)
     (void)mavlink_msg_param_value_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m, id,
                                             param_get(v, i), k_params[i].type,
                                             (uint16_t)VEH_NPARAMS, (uint16_t)i);
-    send_msg(v, &m);
+    veh_link_send(v, &m);
 }
 
 /* ---- receive (a target of 0 is a broadcast) ----------------------------------------------------------------------------- */
@@ -429,7 +380,11 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
     }
     case MAVLINK_MSG_ID_PARAM_REQUEST_READ: on_param_request_read(v, m); break;
     case MAVLINK_MSG_ID_PARAM_SET: on_param_set(v, m); break;
-    default: v->c.link_rx_ignored++; break;
+    default:
+        if (!veh_mlink_on_message(v, m)) {
+            v->c.link_rx_ignored++;
+        }
+        break;
     }
 }
 
@@ -439,18 +394,14 @@ void veh_link_init(void)
 {
     (void)memset(&g_link, 0, sizeof(g_link));
     (void)mt_bring_init(&g_link.rx, g_link.rx_store, (uint32_t)sizeof(g_link.rx_store));
-    (void)mt_bring_init(&g_link.tx, g_link.tx_store, (uint32_t)sizeof(g_link.tx_store));
     g_link.param_next = VEH_NPARAMS;
+    veh_link_tx_init();
+    veh_mlink_init();
 }
 
 mt_bring_t *veh_link_rx(void)
 {
     return &g_link.rx;
-}
-
-mt_bring_t *veh_link_tx(void)
-{
-    return &g_link.tx;
 }
 
 void veh_link_receive(veh_t *v)
@@ -471,6 +422,7 @@ void veh_link_receive(veh_t *v)
             v->c.link_rx_errors++; /* a whole frame dropped: bad CRC or signature */
         }
     }
+    veh_mlink_update(v);
     /* one answer or event per run, so a burst costs no run more than one message (two
      * STATUSTEXT chunks for a long line): a parameter of a list, else a reached item, else
      * a console line */
@@ -501,7 +453,7 @@ void veh_link_stream(veh_t *v)
     switch (r % 10u) {
     case 0u: send_heartbeat(v); break;
     case 3u: send_sys_status(v, &est); break;
-    case 6u: send_mission_current(v); break;
+    case 6u: veh_mlink_send_current(v); break;
     default: break;
     }
 }

@@ -6,8 +6,11 @@
 # warnings.
 include $(HALDIR)/mk/kernel.mk
 VEH_DIR        := $(ROOTDIR)/vehicle
+# mission/item.c: the mission file library's item conversion (no stdio), which a MAVLink
+# upload shares with the files (vehicle/src/mission_link.c)
 VEH_FW_CSRC    := $(wildcard $(VEH_DIR)/src/*.c) $(wildcard $(VEH_DIR)/sim/*.c) \
-                  $(VEH_DIR)/deploy/builtin_mission.c $(VEH_DIR)/deploy/startup.c
+                  $(VEH_DIR)/deploy/builtin_mission.c $(VEH_DIR)/deploy/startup.c \
+                  $(ROOTDIR)/mission/item.c
 APP_EXTRA_CSRC  := $(MT_KERNEL_CSRC) $(MT_PORT_CSRC) $(VEH_FW_CSRC)
 # 2 kHz RT tick: the 400 Hz samples (2500 us) fall on tick edges, so the main loop wakes
 # on time (with 1 kHz every other sample would wake 500 us late).
@@ -15,7 +18,8 @@ APP_EXTRA_CSRC  := $(MT_KERNEL_CSRC) $(MT_PORT_CSRC) $(VEH_FW_CSRC)
 # headers: the strict warnings stay on the vehicle's own code.
 VEH_MAV_DIR     := $(if $(filter /%,$(BUILD)),$(BUILD),$(ROOTDIR)/$(BUILD))/mavlink
 APP_EXTRA_DEFS  := $(MT_DEFS) -DCH_CFG_ST_FREQUENCY=2000 -isystem $(VEH_MAV_DIR)
-APP_EXTRA_INC   := $(MT_INC) $(VEH_DIR) $(VEH_DIR)/src $(VEH_DIR)/sim $(VEH_DIR)/deploy
+APP_EXTRA_INC   := $(MT_INC) $(VEH_DIR) $(VEH_DIR)/src $(VEH_DIR)/sim $(VEH_DIR)/deploy \
+                   $(ROOTDIR)/mission
 APP_STRICT_CSRC := $(MT_STRICT_CSRC) $(VEH_FW_CSRC) $(APPDIR)/main.c
 # float maths
 ULIBS := -lm
