@@ -15,6 +15,7 @@ import signal
 import subprocess
 import sys
 import time
+import types
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, ".tools", "pymavlink"))
@@ -26,7 +27,7 @@ GCS_SYSID = 255
 GCS_COMPID = mav.MAV_COMP_ID_MISSIONPLANNER
 
 
-class Timeout(Exception):
+class Timeout(TimeoutError):
     pass
 
 
@@ -35,6 +36,12 @@ class Session:
 
     def __init__(self, binary, args, timeout=90):
         self.binary, self.args, self.timeout = binary, args, timeout
+        # a ground station sends its heartbeat at 1 Hz of its own (wall) time; at --speedup N
+        # that is 1 Hz of the vehicle's time only if sent N times faster (else FS_GCS_TIMEOUT,
+        # in vehicle time, sees the link lost)
+        speedup = float(args[args.index("--speedup") + 1]) if "--speedup" in args else 1.0
+        self.hb_period = 1.0 / speedup
+        self.hb_on = True  # False: the ground station goes silent (link-loss tests)
         self.msgs = []          # (wall time, message) of every message received, in order
         self.rc, self.out, self.err = None, "", ""
 
@@ -72,7 +79,7 @@ class Session:
     def poll(self, block=0.05):
         """Receive what has arrived; send the GCS heartbeat at 1 Hz (wall clock)."""
         now = time.time()
-        if now - self.last_hb >= 1.0:
+        if self.hb_on and now - self.last_hb >= self.hb_period:
             self.conn.mav.heartbeat_send(mav.MAV_TYPE_GCS, mav.MAV_AUTOPILOT_INVALID, 0, 0, 0)
             self.last_hb = now
         m = self.conn.recv_match(blocking=True, timeout=block)
@@ -84,14 +91,59 @@ class Session:
             raise Timeout("no answer in %d s" % self.timeout)
         return m
 
-    def wait(self, mtype, cond=lambda m: True, seconds=30):
-        """The first message of type mtype satisfying cond from now on."""
+    def mark(self):
+        """A position in the messages received so far (for wait's since)."""
+        return len(self.msgs)
+
+    def wait(self, mtype, cond=lambda m: True, seconds=30, since=None):
+        """The first message of type mtype satisfying cond from now on, or from the mark since
+        (messages already received after it count)."""
+        if since is not None:
+            for _, m in self.msgs[since:]:
+                if m.get_type() == mtype and cond(m):
+                    return m
         end = time.time() + seconds
         while time.time() < end:
             m = self.poll()
             if m is not None and m.get_type() == mtype and cond(m):
                 return m
         raise Timeout("no %s in %d s" % (mtype, seconds))
+
+    def lines(self, since=0):
+        """Console lines (STATUSTEXT, chunks of one id joined) received after the mark since;
+        a line whose first chunk came before the mark, or whose last has not come yet, is
+        left out."""
+        out, parts = [], {}
+        for _, m in self.msgs[since:]:
+            if m.get_type() != "STATUSTEXT":
+                continue
+            if m.id == 0:
+                out.append(m.text)
+                continue
+            if m.chunk_seq == 0:
+                parts[m.id] = []
+            if m.id not in parts:
+                continue
+            parts[m.id].append(m.text)
+            if len(m.text) < 50:
+                out.append("".join(parts.pop(m.id)))
+        return out
+
+    def wait_text(self, cond, seconds=30, since=None):
+        """The first console line satisfying cond (called with an object whose .text is the
+        line), from now on or from the mark since."""
+        start = self.mark() if since is None else since
+        seen = 0
+        end = time.time() + seconds
+        while True:
+            lines = self.lines(start)
+            for t in lines[seen:]:
+                if cond(types.SimpleNamespace(text=t)):
+                    return t
+            seen = len(lines)
+            if time.time() > end:
+                raise Timeout("no console line as expected in %d s" % seconds)
+            self.poll()
 
     def of(self, mtype):
         return [m for _, m in self.msgs if m.get_type() == mtype]
@@ -135,6 +187,26 @@ class Session:
                                                         it["param3"], it["param4"], it["x"], it["y"],
                                                         it["z"], mav.MAV_MISSION_TYPE_MISSION)
         raise Timeout("upload: no MISSION_ACK in %d s" % seconds)
+
+    def command(self, cmd, p1=0.0, p2=0.0, seconds=10):
+        """COMMAND_LONG to the vehicle; its COMMAND_ACK. self.sent_at marks the messages from
+        the moment it was sent (what the command caused may arrive before its ACK)."""
+        self.sent_at = self.mark()
+        self.conn.mav.command_long_send(1, 1, cmd, 0, p1, p2, 0, 0, 0, 0, 0)
+        return self.wait("COMMAND_ACK", lambda m: m.command == cmd, seconds=seconds, since=self.sent_at)
+
+    def arm_and_auto(self, seconds=30):
+        """Arm (again while the pre-arm checks refuse: the barometer calibrates, the GPS needs
+        fixes), then AUTO: the ACKs of both."""
+        end = time.time() + seconds
+        while True:
+            a = self.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0)
+            if a.result == mav.MAV_RESULT_ACCEPTED or time.time() > end:
+                break
+            time.sleep(0.05)
+        b = self.command(mav.MAV_CMD_DO_SET_MODE, float(mav.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED),
+                         float(mav.COPTER_MODE_AUTO))
+        return a, b
 
     def download(self, seconds=30):
         """The mission on board: a list of MISSION_ITEM_INT messages."""

@@ -544,10 +544,12 @@ def t_mavlink_flight(S):
               "identity: %s" % hb)
         check(hb.get_srcComponent() == mav.MAV_COMP_ID_AUTOPILOT1, "component id %d" % hb.get_srcComponent())
         s.conn.mav.param_request_list_send(1, 1)
-        plist = [s.wait("PARAM_VALUE") for _ in range(2)]
+        plist = [s.wait("PARAM_VALUE") for _ in range(4)]
         check([(p.param_id, p.param_index, p.param_count, p.param_value) for p in plist] ==
-              [("SYSID_THISMAV", 0, 2, 1.0), ("WPNAV_SPEED", 1, 2, 500.0)], "parameter list %s" % plist)
-        check(plist[0].param_type == mav.MAV_PARAM_TYPE_INT16 and plist[1].param_type == mav.MAV_PARAM_TYPE_REAL32,
+              [("SYSID_THISMAV", 0, 4, 1.0), ("WPNAV_SPEED", 1, 4, 500.0), ("FS_GCS_ENABLE", 2, 4, 1.0),
+               ("FS_GCS_TIMEOUT", 3, 4, 5.0)], "parameter list %s" % [str(p) for p in plist])
+        check([p.param_type for p in plist] == [mav.MAV_PARAM_TYPE_INT16, mav.MAV_PARAM_TYPE_REAL32,
+                                                mav.MAV_PARAM_TYPE_INT8, mav.MAV_PARAM_TYPE_REAL32],
               "parameter types")
         s.conn.mav.param_set_send(1, 1, b"WPNAV_SPEED", 900.0, mav.MAV_PARAM_TYPE_REAL32)
         check(s.wait("PARAM_VALUE").param_value == 900.0, "WPNAV_SPEED set")
@@ -555,6 +557,8 @@ def t_mavlink_flight(S):
         check(s.wait("PARAM_VALUE").param_value == 900.0, "out-of-range set answered with the value in force")
         s.conn.mav.param_request_read_send(1, 1, b"SYSID_THISMAV", -1)
         check(s.wait("PARAM_VALUE").param_id == "SYSID_THISMAV", "read by name")
+        a, b = s.arm_and_auto()
+        check(a.result == mav.MAV_RESULT_ACCEPTED and b.result == mav.MAV_RESULT_ACCEPTED, "arm, AUTO: %s %s" % (a, b))
         s.wait("STATUSTEXT", lambda m: m.text == "mission: complete", seconds=80)
         s.wait("HEARTBEAT", lambda m: not (m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED))
         s.stop()
@@ -591,7 +595,7 @@ def t_mavlink_flight(S):
           "warnings as such")
     # the cruise speed set from the ground (9 m/s) is flown: 5 m/s before
     check(float(re.search(r"max ground speed ([0-9.]+)", out).group(1)) > 8.0, "WPNAV_SPEED flown")
-    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused = link_counts(out)
+    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused, unsup = link_counts(out)
     check(full == 0 and lost == 0 and dropped == 0 and noise == 0 and unknown == 0 and refused == 1,
           "link counts %s" % (link_counts(out),))
     check(sent >= len(s.msgs) and recvd >= 5, "messages: %d sent, %d seen by the GCS" % (sent, len(s.msgs)))
@@ -600,10 +604,11 @@ def t_mavlink_flight(S):
 
 def link_counts(out):
     """The summary's link line: sent, bytes, not sent, lines lost, received, ignored, frames
-    dropped, noise bytes, unknown parameters, refused sets."""
+    dropped, noise bytes, unknown parameters, refused sets, unsupported commands."""
     m = re.search(r"link \(MAVLink 2\): (\d+) messages, (\d+) bytes sent, (\d+) not sent \(ring full\), (\d+) "
                   r"console lines lost; (\d+) messages received, (\d+) ignored, (\d+) frames dropped, (\d+) "
-                  r"bytes not in a valid frame, (\d+) parameter requests unknown, (\d+) sets refused", out)
+                  r"bytes not in a valid frame, (\d+) parameter requests unknown, (\d+) sets refused, (\d+) "
+                  r"commands unsupported", out)
     check(m is not None, "link summary line:\n" + out[-2000:])
     return tuple(map(int, m.groups()))
 
@@ -666,7 +671,7 @@ def t_mavlink_no_mission(S, binary=None):
         s.stop()
     out = s.out
     check("run ended: interrupted (signal)" in out, "session end:\n" + out[-800:])
-    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused = link_counts(out)
+    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused, unsup = link_counts(out)
     check(dropped == 1, "the corrupted frame is counted (%d)" % dropped)
     check(noise == len(bad) + len(b"\x00\x01garbage"), "bytes outside valid frames counted (%d)" % noise)
     check(unknown == 1 and refused == 0, "unknown parameter counted")
@@ -704,6 +709,8 @@ def t_mavlink_mission_upload(S):
         ack, asked = s.upload(plain)
         check(ack.type == mav.MAV_MISSION_ACCEPTED and asked == list(range(7)), "upload: %s %s" % (ack, asked))
         same_items(s.download(), plain)
+        a, b = s.arm_and_auto()
+        check(a.result == mav.MAV_RESULT_ACCEPTED and b.result == mav.MAV_RESULT_ACCEPTED, "arm, AUTO: %s %s" % (a, b))
         s.wait("STATUSTEXT", lambda m: m.text == "mission: complete", seconds=60)
         s.wait("HEARTBEAT", lambda m: not (m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED))
         flown = [re.match(r"mission: #(\d+) (\w+) started", t).group(1, 2)
@@ -723,6 +730,10 @@ def t_mavlink_mission_upload(S):
             ack, asked = s.upload(items)
             check(ack.type == result and asked == want_asked, "%s: ack %s asked %s" % (what, ack, asked))
             s.wait("STATUSTEXT", lambda m: m.text.startswith("mission upload rejected: item %d" % i))
+        # a link that drops in the middle of an upload: cancelled at 8 s, the mission unchanged
+        ack, asked = s.upload(plain, answer=lambda seq: seq if seq < 3 else None)
+        check(ack.type == mav.MAV_MISSION_OPERATION_CANCELLED and asked[:4] == [0, 1, 2, 3],
+              "upload cut at item 3: %s %s" % (ack, asked[:6]))
         jump = plain[:6] + [dict(plain[1], command=mav.MAV_CMD_DO_JUMP, frame=2, param1=99.0, param2=1.0,
                                  x=0, y=0, z=0.0)] + plain[6:]
         ack, asked = s.upload(jump)
@@ -742,7 +753,7 @@ def t_mavlink_mission_upload(S):
         home = s.download()
         check(len(home) == 1 and abs(home[0].x - jumps[0]["x"]) <= 100, "home stays after a clear: %s" % home)
         s.stop()
-    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused = link_counts(s.out)
+    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused, unsup = link_counts(s.out)
     check(full == 0 and lost == 0 and dropped == 0 and ignored == 0, "link counts %s" % (link_counts(s.out),))
 
 
@@ -770,6 +781,7 @@ def t_mavlink_mission_protocol(S):
         ack, asked = s.upload(plain, answer=out_of_order)
         check(ack.type == mav.MAV_MISSION_ACCEPTED and mav.MAV_MISSION_INVALID_SEQUENCE in s.acks and
               asked[:4] == [0, 1, 2, 2], "out of sequence: %s %s %s" % (ack, s.acks, asked))
+        s.arm_and_auto()
         s.conn.mav.mission_count_send(1, 1, 2, mav.MAV_MISSION_TYPE_FENCE)
         check(s.wait("MISSION_ACK").type == mav.MAV_MISSION_UNSUPPORTED, "fence")
         s.wait("STATUSTEXT", lambda m: m.text.startswith("mission: #2 WAYPOINT started"), seconds=60)
@@ -783,6 +795,121 @@ def t_mavlink_mission_protocol(S):
         s.stop()
     check([e for e in S_events(s.out) if re.match(r"mission: #\d+ \w+ started", e)][-1].startswith("mission: #6 LAND"),
           "the first mission flew to its end")
+
+
+def heartbeat_mode(s, mav, custom, seconds=30):
+    return s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1 and m.custom_mode == custom, seconds=seconds,
+                  since=s.sent_at)
+
+
+def texts_since(s, n0):
+    """Console lines from the n0-th STATUSTEXT on (a long line cut by n0 is left out)."""
+    msgs = s.of("STATUSTEXT")[n0:]
+    while msgs and msgs[0].id != 0 and msgs[0].chunk_seq != 0:
+        msgs = msgs[1:]
+    return statustext_lines(msgs)
+
+
+def t_mavlink_commands(S):
+    """COMMAND_LONG and SET_MODE as ArduPilot answers them: arming refused with the pre-arm
+    reason until the checks pass, AUTO refused while disarmed, MISSION_START, a disarm in flight
+    refused, DO_SET_MISSION_CURRENT, LOITER (the mission stops) and AUTO (it resumes), RTL home,
+    STABILIZE on the ground, then MISSION_START again and LAND where the vehicle is; an unknown
+    command UNSUPPORTED, an unknown mode FAILED."""
+    g, sess = mavlink_session(S, ["--speedup", "10", os.path.join(MISSIONS, "plain.waypoints")])
+    mav = g.mav
+    with sess as s:
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        check(s.command(31000).result == mav.MAV_RESULT_UNSUPPORTED, "unknown command")
+        a = s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0)
+        check(a.result == mav.MAV_RESULT_FAILED, "arming before the pre-arm checks pass: %s" % a)
+        s.wait_text(lambda m: m.text.startswith("vehicle: arming refused: "), since=s.sent_at)
+        b = s.command(mav.MAV_CMD_DO_SET_MODE, 1.0, float(mav.COPTER_MODE_AUTO))
+        check(b.result == mav.MAV_RESULT_FAILED, "AUTO while disarmed: %s" % b)
+        s.wait_text(lambda m: m.text == "gcs: AUTO refused: arm first", since=s.sent_at)
+        check(s.command(mav.MAV_CMD_DO_SET_MODE, 1.0, 13.0).result == mav.MAV_RESULT_FAILED, "mode 13 (SPORT)")
+        a, _ = s.arm_and_auto()
+        check(a.result == mav.MAV_RESULT_ACCEPTED, "arm")
+        s.wait_text(lambda m: m.text.startswith("mission: #2 WAYPOINT started"), since=s.sent_at)
+        d = s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 0.0)
+        check(d.result == mav.MAV_RESULT_FAILED, "disarm in flight without force: %s" % d)
+        check(s.command(mav.MAV_CMD_DO_SET_MISSION_CURRENT, 4.0).result == mav.MAV_RESULT_ACCEPTED, "set current")
+        s.wait_text(lambda m: m.text.startswith("mission: #4 WAYPOINT started"), since=s.sent_at)
+        check(s.command(mav.MAV_CMD_DO_SET_MODE, 1.0, float(mav.COPTER_MODE_LOITER)).result ==
+              mav.MAV_RESULT_ACCEPTED, "LOITER")
+        heartbeat_mode(s, mav, mav.COPTER_MODE_LOITER)
+        n0 = len(s.of("STATUSTEXT"))
+        check(s.command(mav.MAV_CMD_DO_SET_MODE, 1.0, float(mav.COPTER_MODE_AUTO)).result ==
+              mav.MAV_RESULT_ACCEPTED, "AUTO again")
+        resumed = s.sent_at
+        s.wait_text(lambda m: m.text == "gcs: mission resumed", since=resumed)
+        s.wait_text(lambda m: m.text.startswith("mission: #4 WAYPOINT started"), since=resumed)
+        check(s.command(mav.MAV_CMD_NAV_RETURN_TO_LAUNCH).result == mav.MAV_RESULT_ACCEPTED, "RTL")
+        heartbeat_mode(s, mav, mav.COPTER_MODE_RTL)
+        s.wait_text(lambda m: m.text.startswith("vehicle: landed at"), seconds=60, since=s.sent_at)
+        landed = [t for t in texts_since(s, n0) if t.startswith("vehicle: landed at")][-1]
+        check(float(re.search(r"landed at ([0-9.]+) m", landed).group(1)) < 2.0, "RTL lands home: %s" % landed)
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1 and not (m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED))
+        s.conn.mav.set_mode_send(1, mav.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mav.COPTER_MODE_STABILIZE)
+        check(s.wait("COMMAND_ACK", lambda m: m.command == mav.MAV_CMD_DO_SET_MODE).result ==
+              mav.MAV_RESULT_ACCEPTED, "SET_MODE STABILIZE on the ground")
+        # again from the start, then land where it is
+        check(s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0).result == mav.MAV_RESULT_ACCEPTED, "re-arm")
+        check(s.command(mav.MAV_CMD_MISSION_START).result == mav.MAV_RESULT_ACCEPTED, "MISSION_START")
+        s.wait_text(lambda m: m.text.startswith("mission: #3 WAYPOINT started"), seconds=60,
+               since=s.sent_at)
+        n1 = len(s.of("STATUSTEXT"))
+        check(s.command(mav.MAV_CMD_NAV_LAND).result == mav.MAV_RESULT_ACCEPTED, "LAND")
+        heartbeat_mode(s, mav, mav.COPTER_MODE_LAND)
+        s.wait_text(lambda m: m.text.startswith("vehicle: landed at"), seconds=60, since=s.sent_at)
+        landed = [t for t in texts_since(s, n1) if t.startswith("vehicle: landed at")][-1]
+        check(float(re.search(r"landed at ([0-9.]+) m", landed).group(1)) > 20.0, "LAND lands there: %s" % landed)
+        s.stop()
+    counts = link_counts(s.out)
+    check(counts[-1] == 1, "one command counted unsupported: %s" % (counts,))
+
+
+def t_mavlink_link_loss(S):
+    """A ground station that goes silent for FS_GCS_TIMEOUT (vehicle time) while the vehicle
+    flies: RTL by default (home, landed), LAND with FS_GCS_ENABLE 5 (where it is), the mission
+    goes on with 0; the link's return is said; an FS_GCS_ENABLE that is not an action refused."""
+    g, sess = mavlink_session(S, ["--speedup", "10", os.path.join(MISSIONS, "plain.waypoints")])
+    mav = g.mav
+    with sess as s:
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        s.conn.mav.param_set_send(1, 1, b"FS_GCS_ENABLE", 3.0, mav.MAV_PARAM_TYPE_INT8)
+        check(s.wait("PARAM_VALUE").param_value == 1.0, "FS_GCS_ENABLE 3 refused, RTL kept")
+        for action, set_to, mode in (("RTL", None, mav.COPTER_MODE_RTL), ("LAND", 5.0, mav.COPTER_MODE_LAND),
+                                     ("continuing (FS_GCS_ENABLE 0)", 0.0, None)):
+            if set_to is not None:
+                s.conn.mav.param_set_send(1, 1, b"FS_GCS_ENABLE", set_to, mav.MAV_PARAM_TYPE_INT8)
+                check(s.wait("PARAM_VALUE").param_value == set_to, "FS_GCS_ENABLE %s" % set_to)
+            n0 = len(s.of("STATUSTEXT"))
+            a, b = s.arm_and_auto() if action == "RTL" else (
+                s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0), s.command(mav.MAV_CMD_MISSION_START))
+            check(a.result == mav.MAV_RESULT_ACCEPTED and b.result == mav.MAV_RESULT_ACCEPTED, "%s: arm, start" % action)
+            s.wait_text(lambda m: m.text.startswith("mission: #3 WAYPOINT started"), seconds=60,
+                   since=s.sent_at)
+            s.hb_on = False
+            s.sent_at = quiet = s.mark()
+            s.wait_text(lambda m: m.text == "failsafe: ground station link lost: " + action, seconds=30,
+                   since=quiet)
+            if mode is not None:
+                heartbeat_mode(s, mav, mode)
+            s.hb_on = True
+            s.wait_text(lambda m: m.text.startswith("failsafe: ground station link back"), since=quiet)
+            if mode is None:
+                s.wait_text(lambda m: m.text == "mission: complete", seconds=60, since=quiet)
+            else:
+                s.wait_text(lambda m: m.text.startswith("vehicle: landed at"), seconds=60, since=quiet)
+            landed = [t for t in texts_since(s, n0) if t.startswith("vehicle: landed at")][-1]
+            dist = float(re.search(r"landed at ([0-9.]+) m", landed).group(1))
+            check((dist < 2.0) if action == "RTL" else (dist > 20.0) if action == "LAND" else True,
+                  "%s: %s" % (action, landed))
+            s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1 and not (m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED))
+            s.conn.mav.set_mode_send(1, mav.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mav.COPTER_MODE_STABILIZE)
+            s.wait("COMMAND_ACK", lambda m: m.command == mav.MAV_CMD_DO_SET_MODE)
+        s.stop()
 
 
 def t_mavlink_sanitizers(S):
@@ -817,6 +944,8 @@ TESTS = [
     ("mavlink: the same session in the ASan+UBSan build", t_mavlink_sanitizers),
     ("mavlink: mission upload, download, rejections, clear, set current", t_mavlink_mission_upload),
     ("mavlink: mission protocol timing, sequence, a running mission kept", t_mavlink_mission_protocol),
+    ("mavlink: commands (arm, modes, mission start, current, RTL, land)", t_mavlink_commands),
+    ("mavlink: link loss (RTL, LAND, continue)", t_mavlink_link_loss),
 ]
 
 
@@ -841,7 +970,7 @@ def main(argv):
         try:
             fn(S)
             print("PASS %-62s %6.1f s" % (name, time.time() - t1))
-        except (Fail, subprocess.TimeoutExpired, KeyError, TypeError, AttributeError) as e:
+        except (Fail, subprocess.TimeoutExpired, KeyError, TypeError, AttributeError, TimeoutError) as e:
             failed += 1
             print("FAIL %-62s %6.1f s\n     %s" % (name, time.time() - t1, str(e).replace("\n", "\n     ")))
     print("test-vehicle: %d/%d passed in %.1f s" % (n - failed, n, time.time() - t0))

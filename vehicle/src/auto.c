@@ -27,7 +27,6 @@
 #define MILLI 0.001f
 #define WP_RADIUS_DEFAULT 2.0f
 #define CIRCLE_RADIUS_DEFAULT 10.0f
-#define RTL_ALT_MIN 15.0f
 
 static float par(const mt_mission_cmd_t *c, unsigned i)
 {
@@ -183,7 +182,7 @@ static bool start_nav(veh_t *v, uint16_t index, const mt_mission_cmd_t *c)
     case MT_MAV_CMD_RETURN_TO_LAUNCH: {
         float up[3];
         n->kind = VEH_NAV_RTL;
-        s->rtl_alt = fmaxf(RTL_ALT_MIN, -est->pos[2]);
+        s->rtl_alt = fmaxf(VEH_RTL_ALT_MIN, -est->pos[2]);
         up[0] = est->pos[0];
         up[1] = est->pos[1];
         up[2] = -s->rtl_alt;

@@ -1,26 +1,29 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /**
  * @file gcs.c
- * @brief gcs_update (400 Hz): ground-station commands (arm and fly AUTO, stop,
- *        resume, land) with the pre-arm checks, then the MAVLink link's receive
- *        side; telemetry_send (10 Hz): the link's telemetry streams (link.c).
+ * @brief gcs_update (400 Hz): the deployment's ground-station events (arm and
+ *        fly AUTO, stop, resume, land) with the pre-arm checks, then the MAVLink
+ *        link's receive side and the command it decoded (arm/disarm, modes,
+ *        mission start, RTL, land, set current), and the link-loss watch;
+ *        telemetry_send (10 Hz): the link's telemetry streams (link.c).
  *        The estimate (and the sensors' health in it) comes from the
  *        `estimate` topic; arming and modes go through posctl.c.
  */
+#include <math.h>
 #include <string.h>
 
 #include "veh_int.h"
 
 #define GPS_FIXES_TO_ARM 5u
 
-/* Why the vehicle may not arm, or NULL. */
-static const char *prearm_failure(veh_t *v)
+/* Why the vehicle may not arm, or NULL (need_mission: arming to fly AUTO at once). */
+static const char *prearm_failure(veh_t *v, bool need_mission)
 {
     veh_estimate_msg_t est;
     const veh_estimate_msg_t *s = &est;
 
     veh_latest(&v->gcs.est_sub, &est, (uint32_t)sizeof(est));
-    if (!v->mission_ok) {
+    if (need_mission && !v->mission_ok) {
         return "no valid mission loaded";
     }
     if (!s->baro_ok) {
@@ -43,7 +46,7 @@ static void arm_auto(veh_t *v)
     if (v->fl.armed) {
         return;
     }
-    why = prearm_failure(v);
+    why = prearm_failure(v, true);
     if (why != NULL) {
         if (!s->arm_refused_said || (strcmp(why, s->refuse_reason) != 0)) {
             veh_say("vehicle: arming refused: %s", why);
@@ -61,10 +64,170 @@ static void arm_auto(veh_t *v)
     }
 }
 
+/* ---- MAVLink commands (link.c decodes and acknowledges them) ---------------------------- */
+
+/* A running mission stops before another mode takes over (it can be resumed). */
+static void leave_auto(veh_t *v)
+{
+    if ((v->fl.mode == VEH_MODE_AUTO) && (v->mission.state == MT_MISSION_RUNNING)) {
+        (void)mt_mission_stop(&v->mission);
+    }
+}
+
+static veh_cmd_result_t refuse(const char *what, const char *why)
+{
+    veh_say("gcs: %s refused: %s", what, why);
+    return VEH_CMD_FAILED;
+}
+
+static veh_cmd_result_t cmd_arm(veh_t *v, const veh_command_t *c)
+{
+    veh_flight_t *s = &v->fl;
+
+    if (c->p[0] == 1.0f) {
+        const char *why = prearm_failure(v, false);
+        if (s->armed) {
+            return VEH_CMD_DONE;
+        }
+        if (why != NULL) {
+            veh_say("vehicle: arming refused: %s", why);
+            return VEH_CMD_FAILED;
+        }
+        (void)veh_arm(v);
+        return VEH_CMD_DONE;
+    }
+    if (c->p[0] != 0.0f) {
+        return refuse("arm", "param1 is neither 0 nor 1");
+    }
+    if (!s->armed) {
+        return VEH_CMD_DONE;
+    }
+    if (s->flying && (c->p[1] != 21196.0f)) {
+        return refuse("disarm", "flying (param2 21196 forces it)");
+    }
+    leave_auto(v);
+    veh_disarm(v, "ground station");
+    veh_set_mode(v, VEH_MODE_STANDBY);
+    return VEH_CMD_DONE;
+}
+
+/* AUTO: resume a stopped mission, else start it from its first command. */
+static veh_cmd_result_t cmd_auto(veh_t *v, bool restart)
+{
+    if (!v->fl.armed) {
+        return refuse("AUTO", "arm first");
+    }
+    if (!v->mission_ok) {
+        return refuse("AUTO", "no valid mission loaded");
+    }
+    if (!restart && (v->mission.state == MT_MISSION_STOPPED) &&
+        (v->mission.nav != MT_MISSION_NONE)) {
+        veh_set_mode(v, VEH_MODE_AUTO);
+        if (mt_mission_resume(&v->mission) == MT_OK) {
+            veh_say("gcs: mission resumed");
+            return VEH_CMD_DONE;
+        }
+    }
+    veh_set_mode(v, VEH_MODE_AUTO);
+    if (!veh_auto_start(v)) {
+        veh_set_mode(v, VEH_MODE_HOLD);
+        return refuse("AUTO", "the mission did not start");
+    }
+    return VEH_CMD_DONE;
+}
+
+static veh_cmd_result_t cmd_mode(veh_t *v, veh_mode_t m)
+{
+    veh_flight_t *s = &v->fl;
+
+    if (m == s->mode) {
+        return VEH_CMD_DONE;
+    }
+    if (m == VEH_MODE_STANDBY) {
+        if (s->armed) {
+            return refuse("STABILIZE", "armed (disarm first)");
+        }
+        veh_set_mode(v, m);
+        return VEH_CMD_DONE;
+    }
+    if (m == VEH_MODE_AUTO) {
+        return cmd_auto(v, false);
+    }
+    if (!s->armed) {
+        return refuse(veh_mode_name(m), "arm first");
+    }
+    if ((m == VEH_MODE_RTL) && !s->flying) {
+        return refuse("RTL", "not flying");
+    }
+    leave_auto(v);
+    veh_set_mode(v, m);
+    return VEH_CMD_DONE;
+}
+
+static veh_cmd_result_t command_run(veh_t *v, const veh_command_t *c)
+{
+    mt_status_t st;
+
+    switch (c->kind) {
+    case VEH_CMD_ARM: return cmd_arm(v, c);
+    case VEH_CMD_MODE: return cmd_mode(v, (veh_mode_t)c->custom_mode);
+    case VEH_CMD_MISSION_START: return cmd_auto(v, true);
+    case VEH_CMD_RTL: return cmd_mode(v, VEH_MODE_RTL);
+    case VEH_CMD_LAND: return cmd_mode(v, VEH_MODE_LAND);
+    case VEH_CMD_SET_CURRENT:
+    default:
+        if (!isfinite(c->p[0]) || (c->p[0] < 0.0f) || (c->p[0] > 65535.0f)) {
+            return refuse("set current", "not a mission index");
+        }
+        st = mt_mission_set_current(&v->mission, (uint16_t)c->p[0]);
+        if (st != MT_OK) {
+            return refuse("set current", mt_status_str(st));
+        }
+        veh_say("gcs: mission current item set to #%u", (unsigned)c->p[0]);
+        return VEH_CMD_DONE;
+    }
+}
+
+/* Link loss: no ground-station heartbeat for FS_GCS_TIMEOUT while flying takes the
+ * FS_GCS_ENABLE action once; the link's return is said. */
+static void link_watch(veh_t *v)
+{
+    veh_gcs_t *g = &v->gcs;
+    uint64_t last = 0u;
+    uint64_t limit = (uint64_t)(v->par.fs_gcs_timeout_s * 1.0e6f);
+
+    if (!veh_link_gcs_seen(&last)) {
+        return;
+    }
+    if ((veh_now() - last) <= limit) {
+        if (g->link_lost) {
+            g->link_lost = false;
+            veh_say("failsafe: ground station link back (mode %s)", veh_mode_name(v->fl.mode));
+        }
+        return;
+    }
+    if (g->link_lost || !v->fl.armed || !v->fl.flying) {
+        return;
+    }
+    g->link_lost = true;
+    if (v->par.fs_gcs_enable == VEH_FS_GCS_RTL) {
+        veh_say("failsafe: ground station link lost: RTL");
+        leave_auto(v);
+        veh_set_mode(v, VEH_MODE_RTL);
+    } else if (v->par.fs_gcs_enable == VEH_FS_GCS_LAND) {
+        veh_say("failsafe: ground station link lost: LAND");
+        leave_auto(v);
+        veh_set_mode(v, VEH_MODE_LAND);
+    } else {
+        veh_say("failsafe: ground station link lost: continuing (FS_GCS_ENABLE 0)");
+    }
+}
+
 void veh_gcs_update(veh_t *v)
 {
     const veh_flight_t *s = &v->fl;
     veh_gcs_cmd_t cmd = v->plat->gcs_poll(v->plat->ctx);
+    veh_command_t c;
 
     switch (cmd) {
     case VEH_GCS_ARM_AUTO: arm_auto(v); break;
@@ -100,6 +263,10 @@ void veh_gcs_update(veh_t *v)
     default: break;
     }
     veh_link_receive(v);
+    if (veh_link_take_command(&c)) {
+        veh_link_command_ack(v, &c, command_run(v, &c));
+    }
+    link_watch(v);
 }
 
 void veh_telemetry_send(veh_t *v)

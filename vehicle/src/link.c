@@ -20,7 +20,7 @@
  * quadrotor (MAV_TYPE_QUADROTOR) with an ArduPilot-style autopilot
  * (MAV_AUTOPILOT_ARDUPILOTMEGA), so ground stations name the modes with
  * ArduCopter's custom-mode numbers: STANDBY -> STABILIZE (0), AUTO -> AUTO (3),
- * HOLD -> LOITER (5), LAND -> LAND (9).
+ * HOLD -> LOITER (5), LAND -> LAND (9), RTL -> RTL (6).
  */
 #include <string.h>
 
@@ -40,6 +40,9 @@ typedef struct {
     uint32_t reached_sent; /* waypoints reported (MISSION_ITEM_REACHED) */
     uint16_t param_next;   /* next index of a PARAM_REQUEST_LIST answer; VEH_NPARAMS: idle */
     bool gcs_seen;         /* a ground station's HEARTBEAT has come in */
+    uint64_t gcs_last_us;  /* time of the newest */
+    bool cmd_pending;      /* cmd received, not yet taken by gcs_update */
+    veh_command_t cmd;
 } veh_link_t;
 
 static veh_link_t g_link;
@@ -57,19 +60,42 @@ typedef struct {
 static const veh_param_def_t k_params[VEH_NPARAMS] = {
     {"SYSID_THISMAV", MAV_PARAM_TYPE_INT16, 1.0f, 255.0f},
     {"WPNAV_SPEED", MAV_PARAM_TYPE_REAL32, 50.0f, 1500.0f},
+    {"FS_GCS_ENABLE", MAV_PARAM_TYPE_INT8, 0.0f, 5.0f},
+    {"FS_GCS_TIMEOUT", MAV_PARAM_TYPE_REAL32, 2.0f, 120.0f},
 };
 
 static float param_get(const veh_t *v, uint32_t i)
 {
-    return (i == VEH_PARAM_SYSID) ? (float)v->par.sysid : v->par.wpnav_speed_cms;
+    switch (i) {
+    case VEH_PARAM_SYSID: return (float)v->par.sysid;
+    case VEH_PARAM_WPNAV_SPEED: return v->par.wpnav_speed_cms;
+    case VEH_PARAM_FS_GCS_ENABLE: return (float)v->par.fs_gcs_enable;
+    case VEH_PARAM_FS_GCS_TIMEOUT:
+    default: return v->par.fs_gcs_timeout_s;
+    }
+}
+
+/* x is a value parameter i may take (in range; FS_GCS_ENABLE: one of its actions). */
+static bool param_ok(uint32_t i, float x)
+{
+    if (!isfinite(x) || (x < k_params[i].min) || (x > k_params[i].max)) {
+        return false;
+    }
+    if (i == VEH_PARAM_FS_GCS_ENABLE) {
+        return (x == (float)VEH_FS_GCS_CONTINUE) || (x == (float)VEH_FS_GCS_RTL) ||
+               (x == (float)VEH_FS_GCS_LAND);
+    }
+    return true;
 }
 
 static void param_set(veh_t *v, uint32_t i, float x)
 {
-    if (i == VEH_PARAM_SYSID) {
-        v->par.sysid = (uint8_t)x;
-    } else {
-        v->par.wpnav_speed_cms = x;
+    switch (i) {
+    case VEH_PARAM_SYSID: v->par.sysid = (uint8_t)x; break;
+    case VEH_PARAM_WPNAV_SPEED: v->par.wpnav_speed_cms = x; break;
+    case VEH_PARAM_FS_GCS_ENABLE: v->par.fs_gcs_enable = (uint8_t)x; break;
+    case VEH_PARAM_FS_GCS_TIMEOUT:
+    default: v->par.fs_gcs_timeout_s = x; break;
     }
     v->par.gen[i]++;
 }
@@ -93,6 +119,8 @@ void veh_params_default(veh_params_t *p)
 {
     p->sysid = 1u;
     p->wpnav_speed_cms = 500.0f;
+    p->fs_gcs_enable = (uint8_t)VEH_FS_GCS_RTL;
+    p->fs_gcs_timeout_s = 5.0f;
     (void)memset(p->gen, 0, sizeof(p->gen));
 }
 
@@ -104,6 +132,7 @@ static uint32_t custom_mode(veh_mode_t m)
     case VEH_MODE_AUTO: return (uint32_t)COPTER_MODE_AUTO;
     case VEH_MODE_HOLD: return (uint32_t)COPTER_MODE_LOITER;
     case VEH_MODE_LAND: return (uint32_t)COPTER_MODE_LAND;
+    case VEH_MODE_RTL: return (uint32_t)COPTER_MODE_RTL;
     case VEH_MODE_STANDBY:
     default: return (uint32_t)COPTER_MODE_STABILIZE;
     }
@@ -347,16 +376,118 @@ static void on_param_set(veh_t *v, const mavlink_message_t *m)
     if ((k_params[i].type != MAV_PARAM_TYPE_REAL32) && isfinite(x)) {
         x = roundf(x);
     }
-    if (isfinite(x) && (x >= k_params[i].min) && (x <= k_params[i].max)) {
+    if (param_ok(i, x)) {
         param_set(v, i, x);
         veh_say("param: %s set to %s", k_params[i].name, vp_float((char[24]){0}, 24u, x, 2u));
     } else {
         v->c.link_param_refused++;
-        veh_say("param: %s refused (range %s .. %s)", k_params[i].name,
+        veh_say("param: %s refused (%s: range %s .. %s%s)", k_params[i].name,
+                vp_float((char[24]){0}, 24u, x, 2u),
                 vp_float((char[24]){0}, 24u, k_params[i].min, 0u),
-                vp_float((char[24]){0}, 24u, k_params[i].max, 0u));
+                vp_float((char[24]){0}, 24u, k_params[i].max, 0u),
+                (i == VEH_PARAM_FS_GCS_ENABLE) ? "; 0, 1 or 5" : "");
     }
     send_param(v, i);
+}
+
+/* ---- commands: decoded here, run by gcs_update (gcs.c), acknowledged here ---------------- */
+
+static void ack(veh_t *v, uint8_t sys, uint8_t comp, uint16_t command, uint8_t result)
+{
+    mavlink_message_t m;
+
+    (void)mavlink_msg_command_ack_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &m, command,
+                                            result, 0u, 0, sys, comp);
+    veh_link_send(v, &m);
+}
+
+/* The vehicle's mode for an ArduCopter custom mode number, or -1. */
+static int mode_of(uint32_t custom)
+{
+    switch (custom) {
+    case (uint32_t)COPTER_MODE_STABILIZE: return (int)VEH_MODE_STANDBY;
+    case (uint32_t)COPTER_MODE_AUTO: return (int)VEH_MODE_AUTO;
+    case (uint32_t)COPTER_MODE_LOITER: return (int)VEH_MODE_HOLD;
+    case (uint32_t)COPTER_MODE_RTL: return (int)VEH_MODE_RTL;
+    case (uint32_t)COPTER_MODE_LAND: return (int)VEH_MODE_LAND;
+    default: return -1;
+    }
+}
+
+/* SET_MODE has no command number: answered as DO_SET_MODE, as ArduPilot does. */
+static uint16_t ack_id(uint16_t command)
+{
+    return (command == 0u) ? (uint16_t)MAV_CMD_DO_SET_MODE : command;
+}
+
+/* COMMAND_LONG, COMMAND_INT (command, param1, param2) or SET_MODE (command 0, base mode,
+ * custom mode): the supported ones wait for gcs_update, one at a time; the rest are answered
+ * here. */
+static void on_command(veh_t *v, const mavlink_message_t *m, uint16_t command, float p1, float p2)
+{
+    veh_command_t c;
+
+    (void)memset(&c, 0, sizeof(c));
+    c.command = command;
+    c.sys = m->sysid;
+    c.comp = m->compid;
+    c.p[0] = p1;
+    c.p[1] = p2;
+    switch (command) {
+    case MAV_CMD_COMPONENT_ARM_DISARM: c.kind = VEH_CMD_ARM; break;
+    case 0u: /* SET_MODE */
+    case MAV_CMD_DO_SET_MODE: {
+        int mode = (isfinite(p2) && (p2 >= 0.0f) && (p2 < 256.0f)) ? mode_of((uint32_t)p2) : -1;
+        if (mode < 0) {
+            veh_say("gcs: mode %s refused: not a mode of this vehicle",
+                    vp_float((char[24]){0}, 24u, p2, 0u));
+            ack(v, c.sys, c.comp, ack_id(command), (uint8_t)MAV_RESULT_FAILED);
+            return;
+        }
+        c.kind = VEH_CMD_MODE;
+        c.custom_mode = (uint32_t)mode;
+        break;
+    }
+    case MAV_CMD_MISSION_START: c.kind = VEH_CMD_MISSION_START; break;
+    case MAV_CMD_NAV_RETURN_TO_LAUNCH: c.kind = VEH_CMD_RTL; break;
+    case MAV_CMD_NAV_LAND: c.kind = VEH_CMD_LAND; break;
+    case MAV_CMD_DO_SET_MISSION_CURRENT: c.kind = VEH_CMD_SET_CURRENT; break;
+    default:
+        v->c.link_cmd_unsupported++;
+        ack(v, c.sys, c.comp, command, (uint8_t)MAV_RESULT_UNSUPPORTED);
+        return;
+    }
+    if (g_link.cmd_pending) {
+        ack(v, c.sys, c.comp, ack_id(command), (uint8_t)MAV_RESULT_TEMPORARILY_REJECTED);
+        return;
+    }
+    g_link.cmd = c;
+    g_link.cmd_pending = true;
+}
+
+bool veh_link_take_command(veh_command_t *c)
+{
+    if (!g_link.cmd_pending) {
+        return false;
+    }
+    *c = g_link.cmd;
+    g_link.cmd_pending = false;
+    return true;
+}
+
+void veh_link_command_ack(veh_t *v, const veh_command_t *c, veh_cmd_result_t r)
+{
+    uint8_t res = (r == VEH_CMD_DONE)     ? (uint8_t)MAV_RESULT_ACCEPTED
+                  : (r == VEH_CMD_DENIED) ? (uint8_t)MAV_RESULT_DENIED
+                                          : (uint8_t)MAV_RESULT_FAILED;
+
+    ack(v, c->sys, c->comp, ack_id(c->command), res);
+}
+
+bool veh_link_gcs_seen(uint64_t *last_us)
+{
+    *last_us = g_link.gcs_last_us;
+    return g_link.gcs_seen;
 }
 
 static void on_message(veh_t *v, const mavlink_message_t *m)
@@ -364,12 +495,41 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
     v->c.link_rx_msgs++;
     switch (m->msgid) {
     case MAVLINK_MSG_ID_HEARTBEAT:
+        if (m->sysid == v->par.sysid) {
+            break; /* our own id: not a ground station */
+        }
         if (!g_link.gcs_seen) {
             g_link.gcs_seen = true;
             veh_say("link: ground station %u/%u connected", (unsigned)m->sysid,
                     (unsigned)m->compid);
         }
+        g_link.gcs_last_us = veh_now();
         break;
+    case MAVLINK_MSG_ID_COMMAND_LONG: {
+        mavlink_command_long_t c;
+        mavlink_msg_command_long_decode(m, &c);
+        if (for_us(v, c.target_system, c.target_component)) {
+            on_command(v, m, c.command, c.param1, c.param2);
+        }
+        break;
+    }
+    case MAVLINK_MSG_ID_COMMAND_INT: {
+        mavlink_command_int_t c;
+        mavlink_msg_command_int_decode(m, &c);
+        if (for_us(v, c.target_system, c.target_component)) {
+            on_command(v, m, c.command, c.param1, c.param2);
+        }
+        break;
+    }
+    case MAVLINK_MSG_ID_SET_MODE: {
+        mavlink_set_mode_t c;
+        mavlink_msg_set_mode_decode(m, &c);
+        if ((c.target_system == v->par.sysid) &&
+            ((c.base_mode & (uint8_t)MAV_MODE_FLAG_CUSTOM_MODE_ENABLED) != 0u)) {
+            on_command(v, m, 0u, (float)c.base_mode, (float)c.custom_mode);
+        }
+        break;
+    }
     case MAVLINK_MSG_ID_PARAM_REQUEST_LIST: {
         mavlink_param_request_list_t r;
         mavlink_msg_param_request_list_decode(m, &r);

@@ -19,6 +19,8 @@
  * disarming. The flight state (veh_flight_t) is this file's; auto.c fills the nav
  * command and the guidance parameters.
  */
+#include <string.h>
+
 #include "veh_int.h"
 
 #define POS_P 1.0f
@@ -47,6 +49,7 @@ const char *veh_mode_name(veh_mode_t m)
     case VEH_MODE_AUTO: return "AUTO";
     case VEH_MODE_HOLD: return "HOLD";
     case VEH_MODE_LAND: return "LAND";
+    case VEH_MODE_RTL: return "RTL";
     default: return "?";
     }
 }
@@ -370,7 +373,8 @@ static void auto_rtl(veh_t *v, float dt)
         if (s->leg_done && (veh_dist_xy(s->est.pos, s->leg_dest) < 2.0f)) {
             n->phase = 2u;
             nav_reached(v);
-            veh_say("mission: RTL home reached, landing");
+            veh_say("%s: RTL home reached, landing",
+                    (s->mode == VEH_MODE_RTL) ? "vehicle" : "mission");
         }
     } else {
         float home[3] = {0.0f, 0.0f, 0.0f};
@@ -451,6 +455,19 @@ void veh_set_mode(veh_t *v, veh_mode_t m)
             s->land_pos[i] = s->est.pos[i];
         }
         s->landed_ticks = 0u;
+    } else if (m == VEH_MODE_RTL) {
+        /* the mission's RTL, flown as a mode: climb here, return, land at home */
+        float up[3] = {s->est.pos[0], s->est.pos[1], 0.0f};
+        (void)memset(&s->nav, 0, sizeof(s->nav));
+        s->nav.kind = VEH_NAV_RTL;
+        s->nav.index = MT_MISSION_NONE;
+        s->rtl_alt = fmaxf(VEH_RTL_ALT_MIN, -s->est.pos[2]);
+        up[2] = -s->rtl_alt;
+        s->landed_ticks = 0u;
+        veh_leg_start(v, up);
+        veh_say("vehicle: RTL, return at %s m, %s m from home",
+                vp_float((char[16]){0}, 16u, s->rtl_alt, 1u),
+                vp_float((char[16]){0}, 16u, vm_norm2(s->est.pos[0], s->est.pos[1]), 1u));
     } else {
         /* AUTO and STANDBY: the mission or nothing sets the targets */
     }
@@ -520,6 +537,7 @@ static void nav_run(veh_t *v)
         pos_control(v, dt, DESCENT_MAX);
         break;
     case VEH_MODE_LAND: (void)land_run(v, s->land_pos, dt); break;
+    case VEH_MODE_RTL: auto_rtl(v, dt); break;
     case VEH_MODE_STANDBY:
     default: s->thrust = 0.0f; break;
     }

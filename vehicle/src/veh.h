@@ -186,6 +186,7 @@ typedef struct {
     uint32_t link_rx_ignored;     /**< messages received that the vehicle does not handle */
     uint32_t link_param_unknown;  /**< parameter requests or sets naming no parameter */
     uint32_t link_param_refused;  /**< parameter sets out of range (the old value kept) */
+    uint32_t link_cmd_unsupported; /**< commands answered MAV_RESULT_UNSUPPORTED */
 } veh_counters_t;
 
 const veh_counters_t *veh_counters(void);

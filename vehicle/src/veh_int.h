@@ -169,7 +169,11 @@ typedef enum {
     VEH_MODE_AUTO = 1,    /**< the mission flies the vehicle */
     VEH_MODE_HOLD = 2,    /**< position hold (mission stopped) */
     VEH_MODE_LAND = 3,    /**< land here */
+    VEH_MODE_RTL = 4,     /**< return home at VEH_RTL_ALT_MIN or higher, land there */
 } veh_mode_t;
+
+/** Lowest return altitude of RTL (the mode and the mission command), m. */
+#define VEH_RTL_ALT_MIN 15.0f
 
 typedef enum {
     VEH_NAV_NONE = 0,
@@ -262,16 +266,24 @@ typedef struct {
     mt_sub_t est_sub;
     bool arm_refused_said;
     char refuse_reason[64];
+    bool link_lost; /**< the link-loss action was taken; cleared when the link returns */
 } veh_gcs_t;
 
 /** The parameters a ground station reads and sets (link.c serves them; set only there,
  *  read by the components that use them). */
 #define VEH_PARAM_SYSID 0u       /**< SYSID_THISMAV: this vehicle's MAVLink system id (1..255) */
 #define VEH_PARAM_WPNAV_SPEED 1u /**< WPNAV_SPEED: cruise speed, cm/s (50..1500) */
-#define VEH_NPARAMS 2u
+#define VEH_PARAM_FS_GCS_ENABLE 2u /**< FS_GCS_ENABLE: link-loss action, 0 continue, 1 RTL, 5 LAND */
+#define VEH_PARAM_FS_GCS_TIMEOUT 3u /**< FS_GCS_TIMEOUT: link lost after this long, s (2..120) */
+#define VEH_NPARAMS 4u
+#define VEH_FS_GCS_CONTINUE 0u
+#define VEH_FS_GCS_RTL 1u
+#define VEH_FS_GCS_LAND 5u
 typedef struct {
     uint8_t sysid;
     float wpnav_speed_cms;
+    uint8_t fs_gcs_enable;
+    float fs_gcs_timeout_s;
     uint32_t gen[VEH_NPARAMS]; /**< per parameter: incremented by every accepted set */
 } veh_params_t;
 
@@ -368,6 +380,31 @@ bool veh_battery_ok(const veh_t *v);
 float veh_battery_volts(const veh_t *v);
 float veh_battery_amps(const veh_t *v);
 
+/* ground-station commands (link.c decodes them, gcs.c runs them, link.c acknowledges) */
+typedef enum {
+    VEH_CMD_ARM = 0,      /**< p[0] 1 arm, 0 disarm; p[1] 21196 forces a disarm in flight */
+    VEH_CMD_MODE,         /**< custom_mode (ArduCopter's numbers, link.c) */
+    VEH_CMD_MISSION_START,
+    VEH_CMD_RTL,
+    VEH_CMD_LAND,
+    VEH_CMD_SET_CURRENT,  /**< p[0] the mission index */
+} veh_cmd_kind_t;
+
+typedef enum {
+    VEH_CMD_DONE = 0,     /**< MAV_RESULT_ACCEPTED */
+    VEH_CMD_FAILED,       /**< MAV_RESULT_FAILED: not now (the reason is said) */
+    VEH_CMD_DENIED,       /**< MAV_RESULT_DENIED: never in this state (the reason is said) */
+} veh_cmd_result_t;
+
+typedef struct {
+    veh_cmd_kind_t kind;
+    uint16_t command;     /**< the MAV_CMD it came as (0: SET_MODE) */
+    uint8_t sys;          /**< who sent it (the COMMAND_ACK goes there) */
+    uint8_t comp;
+    float p[2];
+    uint32_t custom_mode; /**< VEH_CMD_MODE: the vehicle's mode it maps to (veh_mode_t) */
+} veh_command_t;
+
 /* ground-station link (link.c): MAVLink 2 over the rings of veh_link_rx / veh_link_tx */
 #define VEH_LINK_RX_BYTES 1024u
 #define VEH_LINK_TX_BYTES 4096u
@@ -375,6 +412,13 @@ void veh_link_init(void);
 void veh_params_default(veh_params_t *p);
 void veh_link_receive(veh_t *v); /**< gcs_update: parse, answer, one event message */
 void veh_link_stream(veh_t *v);  /**< telemetry_send: the periodic streams */
+/** The command received and not yet run (one at a time; a second one meanwhile is answered
+ *  TEMPORARILY_REJECTED by the link); false: none. */
+bool veh_link_take_command(veh_command_t *c);
+/** COMMAND_ACK for c with its result. */
+void veh_link_command_ack(veh_t *v, const veh_command_t *c, veh_cmd_result_t r);
+/** A ground station's heartbeat has come in (ever), and the time of the newest. */
+bool veh_link_gcs_seen(uint64_t *last_us);
 
 /* AUTO mode (auto.c) */
 void veh_auto_init(veh_t *v);

@@ -20,8 +20,9 @@
  *     --mavlink udp:ADDR:PORT
  *                        MAVLink 2 ground-station link over UDP: sends to ADDR:PORT (a ground
  *                        station listening there: QGroundControl and MAVProxy listen on 14550)
- *                        and answers whoever sends to it; only a crash or the timeout end the
- *                        run (Ctrl-C: the summary, exit 1)
+ *                        and answers whoever sends to it; the ground station arms the vehicle
+ *                        and picks its mode (no arm requests of our own); only a crash or the
+ *                        timeout end the run (Ctrl-C: the summary)
  *     --speedup N        simulated time paced at N x the wall clock (default with --mavlink: 1;
  *                        without: as fast as possible)
  *     --trace FILE       simulated time: one line per event for the first --ticks (or all)
@@ -236,7 +237,8 @@ static veh_gcs_cmd_t cb_gcs_poll(void *ctx)
     if ((s->next_ev < s->nev) && (now >= s->run.boot_us + s->ev[s->next_ev].t_us)) {
         return s->ev[s->next_ev++].cmd;
     }
-    return veh_run_arm_poll(&s->run);
+    /* with a ground station on MAVLink, it arms the vehicle and picks the mode */
+    return s->run.gcs_session ? VEH_GCS_NONE : veh_run_arm_poll(&s->run);
 }
 
 /* ---- simulated time ------------------------------------------------------------------------- */
