@@ -78,7 +78,8 @@ first_line() {
 
 # ---------------------------------------------------------------------------------------------
 # test: host compilers, GoogleTest, valgrind, clang sanitizers, cJSON (mission .plan files),
-#       pymavlink (MAVLink XML for the generated mission command tables)
+#       pymavlink (MAVLink XML for the generated mission command tables, mavgen for the
+#       vehicle's MAVLink headers, mavutil for its tests), MAVProxy (a scripted flight)
 # ---------------------------------------------------------------------------------------------
 sanitizer_links() {
     local dir="$1" san="$2"
@@ -101,6 +102,30 @@ pymavlink_version() {
         'import importlib.metadata as m, pymavlink; print(m.version("pymavlink"))' 2>/dev/null
 }
 
+# MAVProxy, the ground station of the scripted flight in tests/vehicle (make test-vehicle):
+# pinned, with pyserial, without its optional dependencies (maps, graphs, OpenCV: not used by
+# the test's console session), into .tools/mavproxy; it runs on the pinned pymavlink above.
+MAVPROXY_VERSION=1.8.75
+PYSERIAL_VERSION=3.5
+
+mavproxy_version() {
+    PYTHONPATH="$TOOLS/mavproxy" python3 -c \
+        'import importlib.metadata as m; print(m.version("MAVProxy"), m.version("pyserial"))' 2>/dev/null
+}
+
+ensure_mavproxy() {
+    if [ "$(mavproxy_version || true)" != "$MAVPROXY_VERSION $PYSERIAL_VERSION" ]; then
+        python3 -m pip --version >/dev/null 2>&1 || apt_ensure python3-pip
+        rm -rf "$TOOLS/mavproxy"
+        mkdir -p "$TOOLS"
+        quiet pip-mavproxy python3 -m pip install --disable-pip-version-check --no-input --no-deps \
+            --target "$TOOLS/mavproxy" "MAVProxy==$MAVPROXY_VERSION" "pyserial==$PYSERIAL_VERSION"
+        [ "$(mavproxy_version || true)" = "$MAVPROXY_VERSION $PYSERIAL_VERSION" ] ||
+            die "MAVProxy $MAVPROXY_VERSION not importable after pip install (.tools/mavproxy)"
+    fi
+    record mavproxy "MAVProxy $MAVPROXY_VERSION, pyserial $PYSERIAL_VERSION (.tools/mavproxy; the scripted flight of make test-vehicle)"
+}
+
 ensure_pymavlink() {
     if [ "$(pymavlink_version || true)" != "$PYMAVLINK_VERSION" ]; then
         python3 -m pip --version >/dev/null 2>&1 || apt_ensure python3-pip
@@ -114,7 +139,7 @@ ensure_pymavlink() {
     local where
     where="$(PYTHONPATH="$TOOLS/pymavlink${PYTHONPATH:+:$PYTHONPATH}" python3 -c \
         'import os, pymavlink; print(os.path.dirname(pymavlink.__file__))')"
-    record pymavlink "pymavlink $PYMAVLINK_VERSION (${where#"$ROOT"/}; MAVLink XML for tools/mavcmd)"
+    record pymavlink "pymavlink $PYMAVLINK_VERSION (${where#"$ROOT"/}; MAVLink XML, mavgen, mavutil)"
 }
 
 do_test() {
@@ -138,6 +163,7 @@ do_test() {
     record valgrind "$(first_line valgrind --version)"
     record cjson "libcjson-dev $(pkg_version libcjson-dev)"
     ensure_pymavlink
+    ensure_mavproxy
 }
 
 # ---------------------------------------------------------------------------------------------

@@ -15,6 +15,7 @@ import json
 import math
 import os
 import re
+import signal
 import struct
 import subprocess
 import sys
@@ -582,7 +583,10 @@ def t_mavlink_flight(S):
     check(gps.fix_type == 3 and gps.satellites_visible > 5, "GPS: %s" % gps)
     st = s.of("SYS_STATUS")
     check(all(0 < x.load <= 1000 for x in st[5:]) and 14000 < st[-1].voltage_battery < 17500, "SYS_STATUS %s" % st[-1])
-    check(st[-1].onboard_control_sensors_health == st[-1].onboard_control_sensors_present, "sensors healthy")
+    check(st[-1].onboard_control_sensors_health & st[-1].onboard_control_sensors_present ==
+          st[-1].onboard_control_sensors_present, "sensors healthy")
+    check(st[-1].onboard_control_sensors_health & mav.MAV_SYS_STATUS_GEOFENCE and
+          not st[-1].onboard_control_sensors_present & mav.MAV_SYS_STATUS_GEOFENCE, "no fence, not breached")
     check([m.seq for m in s.of("MISSION_ITEM_REACHED")] == [1, 2, 3, 4, 5, 6], "items reached")
     cur = s.of("MISSION_CURRENT")
     check(all(c.total == 6 for c in cur) and {2, 3, 4, 5} <= {c.seq for c in cur} and
@@ -912,6 +916,112 @@ def t_mavlink_link_loss(S):
         s.stop()
 
 
+class MAVProxy:
+    """MAVProxy (the pinned one in .tools/mavproxy, on the pinned pymavlink) as a console
+    program: commands on its stdin, its output read line by line."""
+
+    def __init__(self, port, cwd):
+        import queue
+        import threading
+        env = dict(os.environ, PYTHONPATH=os.pathsep.join(
+            [os.path.join(ROOT, ".tools", "mavproxy"), os.path.join(ROOT, ".tools", "pymavlink")]))
+        self.p = subprocess.Popen([PY, os.path.join(ROOT, ".tools", "mavproxy", "bin", "mavproxy.py"),
+                                   "--master", "udpin:127.0.0.1:%d" % port], cwd=cwd, env=env,
+                                  stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                  text=True, bufsize=1)
+        self.q = queue.Queue()
+        self.lines = []
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self):
+        for line in self.p.stdout:
+            self.q.put(line.rstrip("\n"))
+        self.q.put(None)
+
+    def send(self, cmd):
+        self.p.stdin.write(cmd + "\n")
+        self.p.stdin.flush()
+
+    def expect(self, patterns, seconds):
+        """The first output line matching one of the regexes (its index and the line)."""
+        import queue
+        end = time.time() + seconds
+        while time.time() < end:
+            try:
+                line = self.q.get(timeout=max(0.01, end - time.time()))
+            except queue.Empty:
+                break
+            if line is None:
+                raise Fail("MAVProxy exited:\n" + "\n".join(self.lines[-30:]))
+            self.lines.append(line)
+            for i, pat in enumerate(patterns):
+                if re.search(pat, line):
+                    return i, line
+        raise Fail("MAVProxy: none of %s in %d s:\n%s" % (patterns, seconds, "\n".join(self.lines[-30:])))
+
+    def close(self):
+        if self.p.poll() is None:
+            try:
+                self.send("exit")
+                self.p.wait(timeout=10)
+            except (OSError, subprocess.TimeoutExpired):
+                self.p.kill()
+                self.p.wait()
+
+
+def free_udp_port():
+    import socket
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
+        sock.bind(("127.0.0.1", 0))
+        return sock.getsockname()[1]
+
+
+def t_mavproxy_flight(S):
+    """A real ground station, MAVProxy (pinned, from PyPI), driven as a user would type:
+    `wp load` of a QGC WPL file, `arm throttle` (again while the pre-arm checks refuse),
+    `mode auto`; the vehicle flies the file's mission to its end at 4x, and MAVProxy shows its
+    messages."""
+    port = free_udp_port()
+    work = tempfile.mkdtemp(prefix="mavproxy-", dir=S.tmp)
+    mp = MAVProxy(port, work)
+    sitl = subprocess.Popen([S.sitl, "--quiet", "--mavlink", "udp:127.0.0.1:%d" % port, "--speedup", "4",
+                             "--timeout", "300"], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
+    try:
+        mp.expect([r"Detected vehicle 1:1"], 30)
+        mp.send("set heartbeat 10")  # 1 Hz of the vehicle's time at 4x needs more than 1 Hz here
+        mp.send("wp load %s" % os.path.join(MISSIONS, "plain.waypoints"))
+        mp.expect([r"Sent all 7 waypoints"], 30)
+        mp.expect([r"AP: mission: 7 items uploaded"], 30)
+        end = time.time() + 60
+        while True:
+            mp.send("arm throttle")
+            i, line = mp.expect([r"^ARMED", r"COMPONENT_ARM_DISARM: FAILED"], 10)
+            if i == 0:
+                break
+            check(time.time() < end, "MAVProxy could not arm: " + line)
+            time.sleep(0.3)
+        mp.send("mode auto")
+        mp.expect([r"AP: mission: #1 TAKEOFF started"], 30)
+        mp.expect([r"AP: mission: complete"], 120)
+        mp.expect([r"^DISARMED"], 30)
+    finally:
+        mp.close()
+        if sitl.poll() is None:
+            sitl.send_signal(signal.SIGINT)
+        out, err = sitl.communicate(timeout=30)
+    flown = [re.match(r"mission: #(\d+) (\w+) started", e).group(1, 2) for e in S_events(out)
+             if re.match(r"mission: #\d+ \w+ started", e)]
+    check(flown == [("1", "TAKEOFF"), ("2", "WAYPOINT"), ("3", "WAYPOINT"), ("4", "WAYPOINT"),
+                    ("5", "WAYPOINT"), ("6", "LAND")], "the file flown from MAVProxy: %s" % flown)
+    check("mission: COMPLETE" in out and "failsafe" not in out, "summary:\n" + out[-1500:])
+    check(any("waypoint 6" in l for l in mp.lines), "MAVProxy followed MISSION_CURRENT")
+    # what an ArduPilot vehicle would not make MAVProxy say: a fence breach (SYS_STATUS health),
+    # an FTP timeout (the vehicle answers FTP with NAK at once)
+    check(not any(("fence breach" in l) or ("FTP: request timed out" in l) for l in mp.lines),
+          "MAVProxy complained:\n%s" % "\n".join(l for l in mp.lines if "fence" in l or "FTP" in l))
+
+
 def t_mavlink_sanitizers(S):
     """The link's parser and answers under ASan+UBSan: the same session, no report."""
     s = t_mavlink_no_mission(S, binary=S.sitl_asan)
@@ -946,6 +1056,7 @@ TESTS = [
     ("mavlink: mission protocol timing, sequence, a running mission kept", t_mavlink_mission_protocol),
     ("mavlink: commands (arm, modes, mission start, current, RTL, land)", t_mavlink_commands),
     ("mavlink: link loss (RTL, LAND, continue)", t_mavlink_link_loss),
+    ("mavproxy: wp load, arm throttle, mode auto: the mission flown", t_mavproxy_flight),
 ]
 
 

@@ -182,6 +182,9 @@ static void send_sys_status(veh_t *v, const veh_estimate_msg_t *est)
     if (veh_battery_ok(v)) {
         health |= (uint32_t)MAV_SYS_STATUS_SENSOR_BATTERY;
     }
+    /* no fence: present and enabled clear, health set (not breached), as ArduPilot reports
+     * it; a clear health bit reads as a breach to ground stations (MAVProxy says so) */
+    health |= (uint32_t)MAV_SYS_STATUS_GEOFENCE;
     (void)mavlink_msg_sys_status_pack_chan(
         v->par.sysid, LINK_COMPID, LINK_CHAN, &m, SENSORS, SENSORS, health,
         (uint16_t)mt_sched_load_permille(&v->sched), (uint16_t)lroundf(volts * 1000.0f),
@@ -490,6 +493,37 @@ bool veh_link_gcs_seen(uint64_t *last_us)
     return g_link.gcs_seen;
 }
 
+/* MAVLink FTP (clients try it first for parameters and missions): every request is answered
+ * NAK UnknownCommand at once, so the client falls back to the plain protocols without waiting
+ * for its timeout. Payload: seq (2, little-endian), session, opcode, size, req_opcode,
+ * burst_complete, padding, offset (4), data. */
+#define FTP_OP_NAK 129u
+#define FTP_ERR_UNKNOWN_COMMAND 7u
+static void on_ftp(veh_t *v, const mavlink_message_t *m)
+{
+    mavlink_file_transfer_protocol_t r;
+    uint8_t out[MAVLINK_MSG_FILE_TRANSFER_PROTOCOL_FIELD_PAYLOAD_LEN];
+    mavlink_message_t a;
+    uint16_t seq;
+
+    mavlink_msg_file_transfer_protocol_decode(m, &r);
+    if (!for_us(v, r.target_system, r.target_component)) {
+        return;
+    }
+    seq = (uint16_t)(((uint32_t)r.payload[0] | ((uint32_t)r.payload[1] << 8)) + 1u);
+    (void)memset(out, 0, sizeof(out));
+    out[0] = (uint8_t)(seq & 0xFFu);
+    out[1] = (uint8_t)(seq >> 8);
+    out[2] = r.payload[2];        /* session */
+    out[3] = (uint8_t)FTP_OP_NAK; /* opcode */
+    out[4] = 1u;                  /* size: one error byte */
+    out[5] = r.payload[3];        /* the request's opcode */
+    out[12] = FTP_ERR_UNKNOWN_COMMAND;
+    (void)mavlink_msg_file_transfer_protocol_pack_chan(v->par.sysid, LINK_COMPID, LINK_CHAN, &a, 0u,
+                                                       m->sysid, m->compid, out);
+    veh_link_send(v, &a);
+}
+
 static void on_message(veh_t *v, const mavlink_message_t *m)
 {
     v->c.link_rx_msgs++;
@@ -539,6 +573,7 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
         break;
     }
     case MAVLINK_MSG_ID_PARAM_REQUEST_READ: on_param_request_read(v, m); break;
+    case MAVLINK_MSG_ID_FILE_TRANSFER_PROTOCOL: on_ftp(v, m); break;
     case MAVLINK_MSG_ID_PARAM_SET: on_param_set(v, m); break;
     default:
         if (!veh_mlink_on_message(v, m)) {
