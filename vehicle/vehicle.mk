@@ -92,7 +92,7 @@ deps-sched:
 sched-check: deps-sched
 	$(SCHED_PYTHON) tools/sched_check.py $(SCHED_TABLE)
 
-test-vehicle: deps-sched $(MAV_HDR) $(BUILD)/sitl/metronome-sitl $(BUILD)/sitl/metronome-sitl-overloaded \
+test-vehicle: deps-sched $(MAV_HDR) $(BUILD)/mt-mission $(BUILD)/sitl/metronome-sitl $(BUILD)/sitl/metronome-sitl-overloaded \
               $(BUILD)/sitl-asan/metronome-sitl $(BUILD)/sitl-tsan/metronome-sitl $(BUILD)/sitl/test_vprint
 	$(SCHED_PYTHON) tests/vehicle/check_callgraph.py gcc $(VEH_WARN) $(VEH_INC) \
 	    -Ihal_chibios/port -Ihal_chibios/include

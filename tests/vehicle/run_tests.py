@@ -916,6 +916,30 @@ def t_mavlink_link_loss(S):
         s.stop()
 
 
+def t_mavlink_reached_order(S):
+    """MISSION_ITEM_REACHED over a mission with jumps (jumps.waypoints uploaded over MAVLink)
+    comes in the order of the nav steps `mt-mission check --json` predicts for it."""
+    tool = os.path.join(os.path.dirname(os.path.dirname(S.sitl)), "mt-mission")
+    path = os.path.join(MISSIONS, "jumps.waypoints")
+    p = subprocess.run([tool, "check", "--json", path], capture_output=True, text=True, timeout=60)
+    check(p.returncode == 0, "mt-mission check: %s" % p.stderr)
+    plan = json.loads(p.stdout)
+    check(not plan["truncated"], "the plan ends")
+    want = [st["index"] for st in plan["plan"] if st["kind"] == "nav"]
+    g, sess = mavlink_session(S, ["--speedup", "20"])
+    mav = g.mav
+    with sess as s:
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        ack, _ = s.upload(g.wpl_items(path))
+        check(ack.type == mav.MAV_MISSION_ACCEPTED, "upload: %s" % ack)
+        a, b = s.arm_and_auto()
+        check(a.result == mav.MAV_RESULT_ACCEPTED and b.result == mav.MAV_RESULT_ACCEPTED, "arm, AUTO")
+        s.wait_text(lambda m: m.text == "mission: complete", seconds=90)
+        s.stop()
+    got = [m.seq for m in s.of("MISSION_ITEM_REACHED")]
+    check(len(want) > 6 and got == want, "items reached %s, mt-mission predicts %s" % (got, want))
+
+
 class MAVProxy:
     """MAVProxy (the pinned one in .tools/mavproxy, on the pinned pymavlink) as a console
     program: commands on its stdin, its output read line by line."""
@@ -1056,6 +1080,7 @@ TESTS = [
     ("mavlink: mission protocol timing, sequence, a running mission kept", t_mavlink_mission_protocol),
     ("mavlink: commands (arm, modes, mission start, current, RTL, land)", t_mavlink_commands),
     ("mavlink: link loss (RTL, LAND, continue)", t_mavlink_link_loss),
+    ("mavlink: items reached in the order mt-mission predicts (jumps)", t_mavlink_reached_order),
     ("mavproxy: wp load, arm throttle, mode auto: the mission flown", t_mavproxy_flight),
 ]
 
@@ -1066,7 +1091,8 @@ def main(argv):
     ap.add_argument("-k", default="")
     args = ap.parse_args(argv)
     S = Suite(os.path.abspath(args.build))
-    for b in (S.sitl, S.sitl_over, S.sitl_asan, S.sitl_tsan, os.path.join(os.path.dirname(S.sitl), "test_vprint")):
+    for b in (S.sitl, S.sitl_over, S.sitl_asan, S.sitl_tsan, os.path.join(os.path.dirname(S.sitl), "test_vprint"),
+              os.path.join(os.path.abspath(args.build), "mt-mission")):
         if not os.access(b, os.X_OK):
             print("missing %s (make test-vehicle builds it)" % b)
             return 2
