@@ -655,6 +655,7 @@ def t_mavlink_no_mission(S, binary=None):
         good = s.conn.mav.param_request_read_encode(1, 1, b"SYSID_THISMAV", -1).pack(s.conn.mav)
         bad = bytearray(good)
         bad[-1] ^= 0xFF
+        s.conn.write(b"\xfd" * 3000)  # a datagram over the SITL's 2 KB: dropped whole, counted
         s.conn.write(bytes(bad) + b"\x00\x01garbage")
         s.conn.mav.param_request_read_send(1, 1, b"NO_SUCH_PARAM", -1)
         s.conn.mav.param_request_read_send(1, 1, b"WPNAV_SPEED", -1)
@@ -681,6 +682,8 @@ def t_mavlink_no_mission(S, binary=None):
     check(unknown == 1 and refused == 0, "unknown parameter counted")
     check(recvd >= 3, "received %d: the two reads and a heartbeat at least" % recvd)
     check(s.rc == 1, "exit status %s (no mission completed)" % s.rc)
+    m = re.search(r"MAVLink udp: \d+ bytes received, (\d+) datagrams dropped", out)
+    check(m is not None and int(m.group(1)) == 1, "the oversized datagram is counted: %s" % (m and m.group(0)))
     return s
 
 

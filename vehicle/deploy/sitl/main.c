@@ -83,7 +83,7 @@ typedef struct {
     int link_fd;              /* UDP socket, -1: none (the link's bytes are discarded) */
     struct sockaddr_in gcs;   /* where the link sends: --mavlink's address, then the last sender */
     uint64_t link_rx_bytes;   /* into the vehicle's receive ring */
-    uint32_t link_rx_dropped; /* datagrams that did not fit in the receive ring */
+    uint32_t link_rx_dropped; /* datagrams that did not fit (the receive ring, or 2 KB) */
     uint64_t link_tx_bytes;   /* out of the vehicle's transmit ring */
     uint32_t link_tx_errors;  /* datagrams sendto refused (nobody listening, ...) */
     double speedup;           /* simulated time at speedup x the wall clock; 0: free-running */
@@ -195,12 +195,14 @@ static void link_pump(sitl_t *s)
     while (s->link_fd >= 0) {
         struct sockaddr_in from;
         socklen_t flen = sizeof(from);
-        ssize_t got = recvfrom(s->link_fd, buf, sizeof(buf), 0, (struct sockaddr *)&from, &flen);
+        /* MSG_TRUNC: the datagram's real length, so one larger than buf is seen (and dropped) */
+        ssize_t got =
+            recvfrom(s->link_fd, buf, sizeof(buf), MSG_TRUNC, (struct sockaddr *)&from, &flen);
         if (got <= 0) {
             break;
         }
         s->gcs = from; /* answer whoever talks to the vehicle */
-        if (mt_bring_space(rx) < (uint32_t)got) {
+        if (((size_t)got > sizeof(buf)) || (mt_bring_space(rx) < (uint32_t)got)) {
             s->link_rx_dropped++;
             continue;
         }
@@ -840,7 +842,8 @@ int main(int argc, char **argv)
                    (unsigned long long)g.overrun_runs, g_overrun_name, (unsigned)g.overrun_us);
     }
     if (g.link_fd >= 0) {
-        veh_printf("MAVLink udp: %llu bytes received, %u datagrams dropped (receive ring full), "
+        veh_printf("MAVLink udp: %llu bytes received, %u datagrams dropped (receive ring full or "
+                   "over 2 KB), "
                    "%llu bytes sent, %u datagrams refused\n",
                    (unsigned long long)g.link_rx_bytes, (unsigned)g.link_rx_dropped,
                    (unsigned long long)g.link_tx_bytes, (unsigned)g.link_tx_errors);
