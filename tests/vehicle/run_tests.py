@@ -660,6 +660,10 @@ def t_mavlink_no_mission(S, binary=None):
         s.conn.mav.param_request_read_send(1, 1, b"NO_SUCH_PARAM", -1)
         s.conn.mav.param_request_read_send(1, 1, b"WPNAV_SPEED", -1)
         check(s.wait("PARAM_VALUE").param_id == "WPNAV_SPEED", "answered after the garbage")
+        # a float no integer holds (found by fuzz_link: the refusal's text converted it; UBSan)
+        s.conn.mav.param_set_send(1, 1, b"WPNAV_SPEED", 1e30, mav.MAV_PARAM_TYPE_REAL32)
+        check(s.wait("PARAM_VALUE").param_value == 500.0, "1e30 refused, 500 in force")
+        s.wait_text(lambda m: m.text.startswith("param: WPNAV_SPEED refused (out of range"))
         # a second ground station talks: the vehicle now answers there
         check(len(s.conn.clients) == 1, "one vehicle address: %s" % s.conn.clients)
         other = g.mavutil.mavlink_connection("udpout:%s:%d" % next(iter(s.conn.clients)), source_system=254,
@@ -679,7 +683,7 @@ def t_mavlink_no_mission(S, binary=None):
     sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused, unsup = link_counts(out)
     check(dropped == 1, "the corrupted frame is counted (%d)" % dropped)
     check(noise == len(bad) + len(b"\x00\x01garbage"), "bytes outside valid frames counted (%d)" % noise)
-    check(unknown == 1 and refused == 0, "unknown parameter counted")
+    check(unknown == 1 and refused == 1, "unknown parameter and refused set counted")
     check(recvd >= 3, "received %d: the two reads and a heartbeat at least" % recvd)
     check(s.rc == 1, "exit status %s (no mission completed)" % s.rc)
     m = re.search(r"MAVLink udp: \d+ bytes received, (\d+) datagrams dropped", out)

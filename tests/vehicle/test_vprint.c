@@ -6,6 +6,7 @@
  *        Prints one line per failure; exit status 1 when any.
  */
 #include <stdint.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -92,6 +93,12 @@ int main(void)
     same("vp_float(-2.25, 1)", vp_float(buf, sizeof(buf), -2.25f, 1u), "-2.3");
     same("vp_float(16.8, 2)", vp_float(buf, sizeof(buf), 16.8f, 2u), "16.80");
     same("vp_float(0.04, 1)", vp_float(buf, sizeof(buf), 0.04f, 1u), "0.0");
+    /* what int64 cannot hold is said in words (a ground station can send any float) */
+    same("vp_float(NaN, 2)", vp_float(buf, sizeof(buf), nanf(""), 2u), "nan");
+    same("vp_float(inf, 2)", vp_float(buf, sizeof(buf), HUGE_VALF, 2u), "inf");
+    same("vp_float(-inf, 0)", vp_float(buf, sizeof(buf), -HUGE_VALF, 0u), "-inf");
+    same("vp_float(1.9e25, 2)", vp_float(buf, sizeof(buf), 1.9e25f, 2u), "out of range");
+    same("vp_float(-9.5e16, 2)", vp_float(buf, sizeof(buf), -9.5e16f, 2u), "out of range");
     cases += 3;
     printf("test_vprint: %d cases, %d failures\n", cases, failures);
     return failures != 0;

@@ -289,8 +289,16 @@ const char *vp_float(char *buf, size_t cap, float x, unsigned decimals)
     for (i = 0u; i < decimals; i++) {
         s *= 10.0f;
     }
-    /* to an integer count of 1/s units, rounded half away from zero */
+    /* to an integer count of 1/s units, rounded half away from zero; what int64 cannot hold
+     * (NaN, the infinities, |x| s of 9e18 or more: a ground station's PARAM_SET can carry any
+     * float) is said in words, never converted */
     y = x * s;
+    if (!(y < 9.0e18f) || !(y > -9.0e18f)) {
+        const char *w = (x != x) ? "nan" : (x - x != 0.0f) ? ((x > 0.0f) ? "inf" : "-inf")
+                                                            : "out of range";
+        (void)vp_snprintf(buf, cap, "%s", w);
+        return buf;
+    }
     y = (y >= 0.0f) ? (y + 0.5f) : (y - 0.5f);
     return vp_fix(buf, cap, (int64_t)y, (int64_t)s, decimals);
 }

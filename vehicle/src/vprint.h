@@ -35,7 +35,8 @@ size_t vp_snprintf(char *buf, size_t cap, const char *fmt, ...)
  *  (rounded half away from zero): vp_fix(buf, 12345, 1000, 1) is "12.3". */
 const char *vp_fix(char *buf, size_t cap, int64_t v, int64_t scale, unsigned decimals);
 
-/** A float printed with `decimals` digits (|x| < 9.2e15 / 10^decimals). */
+/** A float printed with `decimals` digits; "nan", "inf", "-inf", or "out of range" when
+ *  |x| 10^decimals is 9e18 or more. */
 const char *vp_float(char *buf, size_t cap, float x, unsigned decimals);
 
 #ifdef __cplusplus
