@@ -159,10 +159,11 @@ test-mission-deep: $(MISSION_DIFF_DRIVER)
 	$(MISSION_DIFF_PYTHON) tests/mission_diff/run_diff.py --driver $(MISSION_DIFF_DRIVER) --all \
 	    --count 100000 --seed $(MISSION_DIFF_SEED)
 
-# libFuzzer (clang). FUZZ_SECONDS is the time per target (4 targets).
+# libFuzzer (clang). FUZZ_SECONDS is the time per target (5 targets: four here, the vehicle's
+# MAVLink link in vehicle/vehicle.mk); seeds in fuzz/<mission|vehicle>/corpus/<target>.
 FUZZ_SECONDS ?= 10
 FUZZ_FLAGS := -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
-FUZZ_TARGETS := fuzz_wpl fuzz_sequencer fuzz_roundtrip fuzz_plan
+FUZZ_TARGETS := fuzz_wpl fuzz_sequencer fuzz_roundtrip fuzz_plan fuzz_link
 $(BUILD)/fuzz/%: fuzz/mission/%.c $(MISSION_HOST_SRC) $(wildcard mission/*.h) $(MISSION_KERNEL_SRC) \
                  kernel/src/status.c $(wildcard kernel/include/mt/*.h) \
                  $(wildcard kernel/src/*.h)
@@ -173,10 +174,11 @@ fuzz: deps-test
 	@$(MAKE) --no-print-directory $(addprefix $(BUILD)/fuzz/,$(FUZZ_TARGETS))
 	@set -e; for t in $(FUZZ_TARGETS); do \
 	    mkdir -p $(BUILD)/fuzz/corpus/$$t $(BUILD)/fuzz/artifacts; \
-	    echo "== $$t ($(FUZZ_SECONDS) s, seeds fuzz/mission/corpus/$$t)"; \
+	    seeds=$$(ls -d fuzz/*/corpus/$$t); \
+	    echo "== $$t ($(FUZZ_SECONDS) s, seeds $$seeds)"; \
 	    rc=0; $(BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -print_final_stats=1 \
 	        -artifact_prefix=$(BUILD)/fuzz/artifacts/$$t- \
-	        $(BUILD)/fuzz/corpus/$$t fuzz/mission/corpus/$$t >$(BUILD)/fuzz/$$t.log 2>&1 || rc=$$?; \
+	        $(BUILD)/fuzz/corpus/$$t $$seeds >$(BUILD)/fuzz/$$t.log 2>&1 || rc=$$?; \
 	    grep -E "^(#[0-9]+ +DONE|stat::number_of_executed_units|==[0-9]+==ERROR|SUMMARY)" \
 	        $(BUILD)/fuzz/$$t.log || true; \
 	    [ $$rc -eq 0 ] || { tail -40 $(BUILD)/fuzz/$$t.log; echo "fuzz: $$t failed (exit $$rc)"; exit 1; }; \

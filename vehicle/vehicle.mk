@@ -66,6 +66,16 @@ $(eval $(call veh_sitl,$(BUILD)/sitl/metronome-sitl-overloaded,gcc,-O2 -g,$(BUIL
     -DVEHICLE_TASKS_DEF='"$(CURDIR)/tests/vehicle/overloaded.def"'))
 $(BUILD)/sitl/metronome-sitl-overloaded: tests/vehicle/overloaded.def
 
+# libFuzzer: the MAVLink link through its receive ring, the whole vehicle in simulated time
+# (fuzz/vehicle/fuzz_link.c; make fuzz runs it with the mission targets)
+$(BUILD)/fuzz/fuzz_link: fuzz/vehicle/fuzz_link.c $(VEH_SRC) $(VEH_HDR) $(MAV_HDR) \
+                         $(BUILD)/asanubsan/libmt.a $(BUILD)/asanubsan/libmt_posix.a \
+                         $(BUILD)/asanubsan/libmt_mission_host.a
+	@mkdir -p $(@D)
+	clang -std=c11 $(FUZZ_FLAGS) $(VEH_INC) fuzz/vehicle/fuzz_link.c $(VEH_SRC) \
+	    $(BUILD)/asanubsan/libmt_mission_host.a $(BUILD)/asanubsan/libmt_posix.a \
+	    $(BUILD)/asanubsan/libmt.a -lcjson -pthread -lm -o $@
+
 # the console formatter against the C library's printf (ASan + UBSan)
 $(BUILD)/sitl/test_vprint: tests/vehicle/test_vprint.c vehicle/src/vprint.c vehicle/src/vprint.h
 	@mkdir -p $(@D)
