@@ -569,6 +569,11 @@ def t_mavlink_flight(S):
     check((mav.COPTER_MODE_STABILIZE, False, mav.MAV_STATE_STANDBY) in modes and
           (mav.COPTER_MODE_AUTO, True, mav.MAV_STATE_ACTIVE) in modes, "modes seen: %s" % sorted(set(modes)))
     check(modes[-1][1] is False, "disarmed at the end")
+    # one frame sequence for the whole link (the files that pack messages share it): on the
+    # loss-free local link, every frame is the previous one's number + 1
+    seqs = [m.get_seq() for _, m in s.msgs if m.get_srcSystem() == 1]
+    gaps = [(a, b) for a, b in zip(seqs, seqs[1:]) if (b - a) % 256 != 1]
+    check(len(seqs) > 1000 and not gaps, "frame numbers: %d gaps, first %s" % (len(gaps), gaps[:5]))
     # rates, in the vehicle's time: ATTITUDE 10 Hz, positions 5 Hz each, HEARTBEAT 1 Hz
     att = [m.time_boot_ms for m in s.of("ATTITUDE")]
     secs = (att[-1] - att[0]) / 1000.0

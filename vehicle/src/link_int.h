@@ -10,7 +10,13 @@
 
 #include "veh_int.h"
 
-/* the generated headers: build output ($(BUILD)/mavlink), included as system headers */
+/* the generated headers: build output ($(BUILD)/mavlink), included as system headers. One
+ * channel status for every file that packs messages (link_tx.c defines it): the library keeps
+ * a private one per translation unit otherwise, and each file would number its own frames
+ * (the sequence a ground station counts lost packets by). The library's mechanism and name. */
+#define MAVLINK_EXTERNAL_RX_STATUS
+#include "mavlink_types.h"
+extern mavlink_status_t m_mavlink_status[MAVLINK_COMM_NUM_BUFFERS];
 #include "ardupilotmega/mavlink.h"
 
 #define VEH_LINK_COMPID MAV_COMP_ID_AUTOPILOT1

@@ -16,6 +16,9 @@ typedef struct {
 
 static veh_link_tx_t g_tx;
 
+/* the MAVLink library's channel status, shared by the link's files (link_int.h) */
+mavlink_status_t m_mavlink_status[MAVLINK_COMM_NUM_BUFFERS];
+
 void veh_link_tx_init(void)
 {
     (void)memset(&g_tx, 0, sizeof(g_tx));
