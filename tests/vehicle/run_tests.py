@@ -604,7 +604,7 @@ def t_mavlink_flight(S):
           "warnings as such")
     # the cruise speed set from the ground (9 m/s) is flown: 5 m/s before
     check(float(re.search(r"max ground speed ([0-9.]+)", out).group(1)) > 8.0, "WPNAV_SPEED flown")
-    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused, unsup = link_counts(out)
+    sent, nbytes, full, lost, recvd, ignored, dropped, unsigned, noise, unknown, refused, unsup = link_counts(out)
     check(full == 0 and lost == 0 and dropped == 0 and noise == 0 and unknown == 0 and refused == 1,
           "link counts %s" % (link_counts(out),))
     check(sent >= len(s.msgs) and recvd >= 5, "messages: %d sent, %d seen by the GCS" % (sent, len(s.msgs)))
@@ -613,10 +613,11 @@ def t_mavlink_flight(S):
 
 def link_counts(out):
     """The summary's link line: sent, bytes, not sent, lines lost, received, ignored, frames
-    dropped, noise bytes, unknown parameters, refused sets, unsupported commands."""
+    dropped (CRC), frames dropped (signing), noise bytes, unknown parameters, refused sets,
+    unsupported commands."""
     m = re.search(r"link \(MAVLink 2\): (\d+) messages, (\d+) bytes sent, (\d+) not sent \(ring full\), (\d+) "
                   r"console lines lost; (\d+) messages received, (\d+) ignored, (\d+) frames dropped, (\d+) "
-                  r"bytes not in a valid frame, (\d+) parameter requests unknown, (\d+) sets refused, (\d+) "
+                  r"unsigned, (\d+) bytes not in a valid frame, (\d+) parameter requests unknown, (\d+) sets refused, (\d+) "
                   r"commands unsupported", out)
     check(m is not None, "link summary line:\n" + out[-2000:])
     return tuple(map(int, m.groups()))
@@ -685,7 +686,7 @@ def t_mavlink_no_mission(S, binary=None):
         s.stop()
     out = s.out
     check("run ended: interrupted (signal)" in out, "session end:\n" + out[-800:])
-    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused, unsup = link_counts(out)
+    sent, nbytes, full, lost, recvd, ignored, dropped, unsigned, noise, unknown, refused, unsup = link_counts(out)
     check(dropped == 1, "the corrupted frame is counted (%d)" % dropped)
     check(noise == len(bad) + len(b"\x00\x01garbage"), "bytes outside valid frames counted (%d)" % noise)
     check(unknown == 1 and refused == 1, "unknown parameter and refused set counted")
@@ -769,7 +770,7 @@ def t_mavlink_mission_upload(S):
         home = s.download()
         check(len(home) == 1 and abs(home[0].x - jumps[0]["x"]) <= 100, "home stays after a clear: %s" % home)
         s.stop()
-    sent, nbytes, full, lost, recvd, ignored, dropped, noise, unknown, refused, unsup = link_counts(s.out)
+    sent, nbytes, full, lost, recvd, ignored, dropped, unsigned, noise, unknown, refused, unsup = link_counts(s.out)
     check(full == 0 and lost == 0 and dropped == 0 and ignored == 0, "link counts %s" % (link_counts(s.out),))
 
 
@@ -952,6 +953,39 @@ def t_mavlink_reached_order(S):
     check(len(want) > 6 and got == want, "items reached %s, mt-mission predicts %s" % (got, want))
 
 
+def t_mavlink_signing(S):
+    """MAVLink 2 signing (--signing-key): the vehicle signs every frame; an unsigned command is
+    dropped (no answer, counted); signed with the same key (pymavlink's setup_signing) it is
+    accepted and the vehicle flies."""
+    key = bytes(range(1, 33))
+    g, sess = mavlink_session(S, ["--speedup", "10", "--signing-key", key.hex(),
+                                  os.path.join(MISSIONS, "plain.waypoints")])
+    mav = g.mav
+    with sess as s:
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        check(s.conn.mav.signing.sig_count > 0, "the vehicle's frames carry a signature")
+        mark = s.mark()
+        s.conn.mav.command_long_send(1, 1, mav.MAV_CMD_COMPONENT_ARM_DISARM, 0, 1, 0, 0, 0, 0, 0, 0)
+        try:
+            s.wait("COMMAND_ACK", seconds=2, since=mark)
+            check(False, "an unsigned command was answered")
+        except g.Timeout:
+            pass
+        s.conn.setup_signing(key, sign_outgoing=True)
+        a, b = s.arm_and_auto()
+        check(a.result == mav.MAV_RESULT_ACCEPTED and b.result == mav.MAV_RESULT_ACCEPTED, "signed: %s %s" % (a, b))
+        s.wait_text(lambda m: m.text.startswith("mission: #2 WAYPOINT started"), seconds=60)
+        hb = s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        check(hb.get_signed() and s.conn.mav.signing.goodsig_count > 100 and s.conn.mav.signing.badsig_count == 0,
+              "pymavlink checks the vehicle's signatures with the key: %d good, %d bad"
+              % (s.conn.mav.signing.goodsig_count, s.conn.mav.signing.badsig_count))
+        s.stop()
+    counts = link_counts(s.out)
+    check(counts[7] >= 2 and counts[6] == 0, "unsigned frames dropped and counted (heartbeats, the command): %s"
+          % (counts,))
+    check("MAVLink signing on" in s.out, "said at start")
+
+
 class MAVProxy:
     """MAVProxy (the pinned one in .tools/mavproxy, on the pinned pymavlink) as a console
     program: commands on its stdin, its output read line by line."""
@@ -1093,6 +1127,7 @@ TESTS = [
     ("mavlink: commands (arm, modes, mission start, current, RTL, land)", t_mavlink_commands),
     ("mavlink: link loss (RTL, LAND, continue)", t_mavlink_link_loss),
     ("mavlink: items reached in the order mt-mission predicts (jumps)", t_mavlink_reached_order),
+    ("mavlink: signing (unsigned command dropped, signed accepted)", t_mavlink_signing),
     ("mavproxy: wp load, arm throttle, mode auto: the mission flown", t_mavproxy_flight),
 ]
 

@@ -47,6 +47,11 @@ typedef struct {
 
 static veh_link_t g_link;
 
+/* MAVLink 2 signing (off until veh_link_signing): the key, the outgoing timestamp, the
+ * timestamps of the streams seen */
+static mavlink_signing_t g_sign;
+static mavlink_signing_streams_t g_sign_streams;
+
 /* ---- parameters ------------------------------------------------------------------------ */
 
 typedef struct {
@@ -594,6 +599,21 @@ void veh_link_init(void)
     veh_mlink_init();
 }
 
+void veh_link_signing(const uint8_t key[32], uint64_t timestamp)
+{
+    (void)memset(&g_sign, 0, sizeof(g_sign));
+    (void)memset(&g_sign_streams, 0, sizeof(g_sign_streams));
+    (void)memcpy(g_sign.secret_key, key, sizeof(g_sign.secret_key));
+    g_sign.flags = (uint8_t)MAVLINK_SIGNING_FLAG_SIGN_OUTGOING;
+    g_sign.link_id = (uint8_t)LINK_CHAN;
+    g_sign.timestamp = timestamp;
+    g_sign.accept_unsigned_callback = NULL; /* an unsigned frame is dropped, whatever it is */
+    g_link.rx_status.signing = &g_sign;
+    g_link.rx_status.signing_streams = &g_sign_streams;
+    mavlink_get_channel_status(LINK_CHAN)->signing = &g_sign; /* every frame sent is signed */
+    mavlink_get_channel_status(LINK_CHAN)->signing_streams = &g_sign_streams;
+}
+
 mt_bring_t *veh_link_rx(void)
 {
     return &g_link.rx;
@@ -613,8 +633,10 @@ void veh_link_receive(veh_t *v)
         if (r == MAVLINK_FRAMING_OK) {
             v->c.link_rx_frame_bytes += mavlink_msg_get_send_buffer_length(&m);
             on_message(v, &m);
+        } else if (r == MAVLINK_FRAMING_BAD_SIGNATURE) {
+            v->c.link_rx_unsigned++; /* signing on: unsigned, wrong key or replayed */
         } else if (r != MAVLINK_FRAMING_INCOMPLETE) {
-            v->c.link_rx_errors++; /* a whole frame dropped: bad CRC or signature */
+            v->c.link_rx_errors++; /* a whole frame dropped: bad CRC */
         }
     }
     veh_mlink_update(v);

@@ -125,6 +125,12 @@ mt_wq_t *veh_work_queue(void);
 mt_bring_t *veh_link_rx(void);
 mt_bring_t *veh_link_tx(void);
 
+/** MAVLink 2 signing on (after veh_init; off by default): every frame sent is signed with
+ *  key, and a frame received unsigned, signed with another key or replayed is dropped and
+ *  counted (veh_counters_t.link_rx_unsigned). timestamp: the signature clock's start, in
+ *  10 us since 2015-01-01 (MAVLink's unit); it then advances with every frame. */
+void veh_link_signing(const uint8_t key[32], uint64_t timestamp);
+
 /** Timer-proc period and cost range from tasks.def (for the deployment). */
 void veh_timer_spec(uint32_t *period_us, uint32_t *cost_min_us, uint32_t *cost_max_us);
 
@@ -159,33 +165,34 @@ void veh_printf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /** Counters the summary and the tests use. */
 typedef struct {
-    uint32_t cmds_started;        /**< mission commands started (nav and do) */
-    uint32_t wps_reached;         /**< nav commands verified */
-    uint32_t completions;         /**< mission complete callbacks */
-    uint64_t armed_us;            /**< time of arming (0: never) */
-    uint64_t disarmed_us;         /**< time of disarming after flight (0: not yet) */
-    uint64_t baro_sent;           /**< samples the timer proc published */
-    uint64_t baro_received;       /**< samples the main loop took */
-    uint32_t baro_dropped;        /**< samples lost on a full ring (drop-oldest) */
-    uint32_t baro_bus_fail;       /**< timer-proc reads that could not get the bus */
-    uint64_t log_bytes;           /**< bytes the IO proc wrote to the sink */
-    uint64_t log_records;         /**< records written to the ring */
-    uint32_t log_dropped;         /**< records that did not fit in the ring */
-    uint32_t log_max_fill;        /**< highest ring fill seen by the writer */
-    uint64_t bus_transfers;       /**< bus transactions */
-    uint32_t bus_waits;           /**< bus takes that had to wait */
-    uint32_t bus_timeouts;        /**< bus takes that timed out */
-    uint64_t telem_packets;       /**< MAVLink messages put in the link's transmit ring */
-    uint64_t telem_bytes;         /**< their bytes */
-    uint32_t telem_full;          /**< messages not sent: the transmit ring was full */
-    uint32_t said_lost;           /**< console lines overwritten before they were sent */
-    uint32_t link_rx_msgs;        /**< MAVLink messages received */
-    uint32_t link_rx_errors;      /**< frames the parser dropped (bad CRC or signature) */
-    uint64_t link_rx_bytes;       /**< bytes taken from the receive ring */
-    uint64_t link_rx_frame_bytes; /**< of those, bytes of valid frames */
-    uint32_t link_rx_ignored;     /**< messages received that the vehicle does not handle */
-    uint32_t link_param_unknown;  /**< parameter requests or sets naming no parameter */
-    uint32_t link_param_refused;  /**< parameter sets out of range (the old value kept) */
+    uint32_t cmds_started;         /**< mission commands started (nav and do) */
+    uint32_t wps_reached;          /**< nav commands verified */
+    uint32_t completions;          /**< mission complete callbacks */
+    uint64_t armed_us;             /**< time of arming (0: never) */
+    uint64_t disarmed_us;          /**< time of disarming after flight (0: not yet) */
+    uint64_t baro_sent;            /**< samples the timer proc published */
+    uint64_t baro_received;        /**< samples the main loop took */
+    uint32_t baro_dropped;         /**< samples lost on a full ring (drop-oldest) */
+    uint32_t baro_bus_fail;        /**< timer-proc reads that could not get the bus */
+    uint64_t log_bytes;            /**< bytes the IO proc wrote to the sink */
+    uint64_t log_records;          /**< records written to the ring */
+    uint32_t log_dropped;          /**< records that did not fit in the ring */
+    uint32_t log_max_fill;         /**< highest ring fill seen by the writer */
+    uint64_t bus_transfers;        /**< bus transactions */
+    uint32_t bus_waits;            /**< bus takes that had to wait */
+    uint32_t bus_timeouts;         /**< bus takes that timed out */
+    uint64_t telem_packets;        /**< MAVLink messages put in the link's transmit ring */
+    uint64_t telem_bytes;          /**< their bytes */
+    uint32_t telem_full;           /**< messages not sent: the transmit ring was full */
+    uint32_t said_lost;            /**< console lines overwritten before they were sent */
+    uint32_t link_rx_msgs;         /**< MAVLink messages received */
+    uint32_t link_rx_errors;       /**< frames the parser dropped (bad CRC or signature) */
+    uint32_t link_rx_unsigned;     /**< frames dropped by signing (unsigned, wrong key, replayed) */
+    uint64_t link_rx_bytes;        /**< bytes taken from the receive ring */
+    uint64_t link_rx_frame_bytes;  /**< of those, bytes of valid frames */
+    uint32_t link_rx_ignored;      /**< messages received that the vehicle does not handle */
+    uint32_t link_param_unknown;   /**< parameter requests or sets naming no parameter */
+    uint32_t link_param_refused;   /**< parameter sets out of range (the old value kept) */
     uint32_t link_cmd_unsupported; /**< commands answered MAV_RESULT_UNSUPPORTED */
 } veh_counters_t;
 

@@ -477,12 +477,14 @@ void veh_summary(const char *stop_reason)
                (unsigned)c->log_dropped, (unsigned)c->log_max_fill, (unsigned)sizeof(v->log_store),
                (unsigned long long)v->io_procs.dispatches);
     veh_printf("link (MAVLink 2): %llu messages, %llu bytes sent, %u not sent (ring full), %u "
-               "console lines lost; %u messages received, %u ignored, %u frames dropped, %llu "
+               "console lines lost; %u messages received, %u ignored, %u frames dropped, %u "
+               "unsigned, %llu "
                "bytes not in a valid frame, %u parameter requests unknown, %u sets refused, %u "
                "commands unsupported\n",
                (unsigned long long)c->telem_packets, (unsigned long long)c->telem_bytes,
                (unsigned)c->telem_full, (unsigned)c->said_lost, (unsigned)c->link_rx_msgs,
                (unsigned)c->link_rx_ignored, (unsigned)c->link_rx_errors,
+               (unsigned)c->link_rx_unsigned,
                (unsigned long long)(c->link_rx_bytes - c->link_rx_frame_bytes),
                (unsigned)c->link_param_unknown, (unsigned)c->link_param_refused,
                (unsigned)c->link_cmd_unsupported);

@@ -23,6 +23,9 @@
  *                        and answers whoever sends to it; the ground station arms the vehicle
  *                        and picks its mode (no arm requests of our own); only a crash or the
  *                        timeout end the run (Ctrl-C: the summary)
+ *     --signing-key HEX  MAVLink 2 signing with this 32-byte key (64 hex digits; MAVProxy's
+ *                        `signing setup PASSPHRASE` uses SHA-256 of the passphrase): frames sent
+ *                        are signed, frames received unsigned are dropped (counted)
  *     --speedup N        simulated time paced at N x the wall clock (default with --mavlink: 1;
  *                        without: as fast as possible)
  *     --trace FILE       simulated time: one line per event for the first --ticks (or all)
@@ -87,6 +90,8 @@ typedef struct {
     uint64_t link_tx_bytes;   /* out of the vehicle's transmit ring */
     uint32_t link_tx_errors;  /* datagrams sendto refused (nobody listening, ...) */
     double speedup;           /* simulated time at speedup x the wall clock; 0: free-running */
+    bool signing;             /* --signing-key given */
+    uint8_t key[32];
     /* simulated time */
     uint64_t next_sample;
     uint32_t period_us;
@@ -216,6 +221,24 @@ static void link_pump(sitl_t *s)
         }
         s->link_tx_bytes += n;
     }
+}
+
+/* A 32-byte key from 64 hex digits. */
+static bool parse_key(const char *hex, uint8_t key[32])
+{
+    size_t i;
+
+    if (strlen(hex) != 64u) {
+        return false;
+    }
+    for (i = 0u; i < 32u; i++) {
+        unsigned v;
+        if (sscanf(&hex[2u * i], "%2x", &v) != 1) {
+            return false;
+        }
+        key[i] = (uint8_t)v;
+    }
+    return true;
 }
 
 /* Simulated time no faster than speedup x the wall clock since w0. */
@@ -501,6 +524,7 @@ static int usage(void)
             "                      [--log FILE] [--event T:stop|resume|land]...\n"
             "                      [--overrun TASK:US[:START[:DURATION]]] [--wind N,E] [--quiet]\n"
             "                      [--trace FILE] [--mavlink udp:ADDR:PORT] [--speedup N]\n"
+            "                      [--signing-key HEX64]\n"
             "                      [MISSION.waypoints | MISSION.plan]\n");
     return 2;
 }
@@ -674,6 +698,12 @@ int main(int argc, char **argv)
                 return usage();
             }
             i++;
+        } else if ((strcmp(a, "--signing-key") == 0) && (val != NULL)) {
+            if (!parse_key(val, g.key)) {
+                return usage();
+            }
+            g.signing = true;
+            i++;
         } else if ((strcmp(a, "--speedup") == 0) && (val != NULL)) {
             g.speedup = strtod(val, NULL);
             if (!(g.speedup > 0.0) || !(g.speedup <= 1000.0)) {
@@ -786,6 +816,14 @@ int main(int argc, char **argv)
     if (g.overrun_task >= 0) {
         veh_printf("fault injection: %s takes %u us more per run\n", g_overrun_name,
                    (unsigned)g.overrun_us);
+    }
+    if (g.signing) {
+        struct timespec now;
+        /* the signature clock: MAVLink's 10 us units since 2015-01-01, from the host's clock */
+        clock_gettime(CLOCK_REALTIME, &now);
+        veh_link_signing(g.key, ((uint64_t)now.tv_sec - 1420070400u) * 100000u +
+                                    (uint64_t)now.tv_nsec / 10000u);
+        veh_printf("MAVLink signing on: frames sent are signed, unsigned ones received dropped\n");
     }
     if (g.link_fd >= 0) {
         char ip[INET_ADDRSTRLEN];
