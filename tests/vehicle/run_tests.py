@@ -617,8 +617,8 @@ def link_counts(out):
     unsupported commands."""
     m = re.search(r"link \(MAVLink 2\): (\d+) messages, (\d+) bytes sent, (\d+) not sent \(ring full\), (\d+) "
                   r"console lines lost; (\d+) messages received, (\d+) ignored, (\d+) frames dropped, (\d+) "
-                  r"unsigned, (\d+) bytes not in a valid frame, (\d+) parameter requests unknown, (\d+) sets refused, (\d+) "
-                  r"commands unsupported", out)
+                  r"unsigned, (\d+) bytes not in a valid frame, (\d+) parameter requests unknown, (\d+) "
+                  r"sets refused, (\d+) commands unsupported", out)
     check(m is not None, "link summary line:\n" + out[-2000:])
     return tuple(map(int, m.groups()))
 
@@ -904,7 +904,8 @@ def t_mavlink_link_loss(S):
             n0 = len(s.of("STATUSTEXT"))
             a, b = s.arm_and_auto() if action == "RTL" else (
                 s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0), s.command(mav.MAV_CMD_MISSION_START))
-            check(a.result == mav.MAV_RESULT_ACCEPTED and b.result == mav.MAV_RESULT_ACCEPTED, "%s: arm, start" % action)
+            check(a.result == mav.MAV_RESULT_ACCEPTED and b.result == mav.MAV_RESULT_ACCEPTED,
+                  "%s: arm, start" % action)
             s.wait_text(lambda m: m.text.startswith("mission: #3 WAYPOINT started"), seconds=60,
                    since=s.sent_at)
             s.hb_on = False

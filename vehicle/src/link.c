@@ -339,7 +339,7 @@ static void send_param(veh_t *v, uint32_t i)
     veh_link_send(v, &m);
 }
 
-/* ---- receive (a target of 0 is a broadcast) ----------------------------------------------------------------------------- */
+/* ---- receive (a target of 0 is a broadcast) ---------------------------------------- */
 
 static bool for_us(const veh_t *v, uint8_t sys, uint8_t comp)
 {

@@ -271,10 +271,10 @@ typedef struct {
 
 /** The parameters a ground station reads and sets (link.c serves them; set only there,
  *  read by the components that use them). */
-#define VEH_PARAM_SYSID 0u       /**< SYSID_THISMAV: this vehicle's MAVLink system id (1..255) */
-#define VEH_PARAM_WPNAV_SPEED 1u /**< WPNAV_SPEED: cruise speed, cm/s (50..1500) */
-#define VEH_PARAM_FS_GCS_ENABLE 2u /**< FS_GCS_ENABLE: link-loss action, 0 continue, 1 RTL, 5 LAND */
-#define VEH_PARAM_FS_GCS_TIMEOUT 3u /**< FS_GCS_TIMEOUT: link lost after this long, s (2..120) */
+#define VEH_PARAM_SYSID 0u          /**< SYSID_THISMAV: the MAVLink system id (1..255) */
+#define VEH_PARAM_WPNAV_SPEED 1u    /**< WPNAV_SPEED: cruise speed, cm/s (50..1500) */
+#define VEH_PARAM_FS_GCS_ENABLE 2u  /**< FS_GCS_ENABLE: link loss: 0 go on, 1 RTL, 5 LAND */
+#define VEH_PARAM_FS_GCS_TIMEOUT 3u /**< FS_GCS_TIMEOUT: link lost after it, s (2..120) */
 #define VEH_NPARAMS 4u
 #define VEH_FS_GCS_CONTINUE 0u
 #define VEH_FS_GCS_RTL 1u
