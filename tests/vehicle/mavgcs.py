@@ -109,10 +109,11 @@ class Session:
                 return m
         raise Timeout("no %s in %d s" % (mtype, seconds))
 
-    def lines(self, since=0):
-        """Console lines (STATUSTEXT, chunks of one id joined) received after the mark since;
-        a line whose first chunk came before the mark, or whose last has not come yet, is
-        left out."""
+    def lines(self, since=0, complete=False):
+        """Console lines (STATUSTEXT, the chunks of one id joined in chunk_seq order) received
+        after the mark since. A line whose first chunk came before the mark is left out, and so
+        is one whose last chunk has not come yet unless complete (then it is an error); a chunk
+        out of order is an error (ValueError)."""
         out, parts = [], {}
         for _, m in self.msgs[since:]:
             if m.get_type() != "STATUSTEXT":
@@ -124,9 +125,13 @@ class Session:
                 parts[m.id] = []
             if m.id not in parts:
                 continue
+            if m.chunk_seq != len(parts[m.id]):
+                raise ValueError("STATUSTEXT id %d: chunk %d after %s" % (m.id, m.chunk_seq, parts[m.id]))
             parts[m.id].append(m.text)
             if len(m.text) < 50:
                 out.append("".join(parts.pop(m.id)))
+        if complete and parts:
+            raise ValueError("unfinished STATUSTEXT lines: %s" % parts)
         return out
 
     def wait_text(self, cond, seconds=30, since=None):

@@ -596,7 +596,7 @@ def t_mavlink_flight(S):
     cur = s.of("MISSION_CURRENT")
     check(all(c.total == 6 for c in cur) and {2, 3, 4, 5} <= {c.seq for c in cur} and
           mav.MISSION_STATE_ACTIVE in {c.mission_state for c in cur}, "MISSION_CURRENT")
-    texts = statustext_lines(s.of("STATUSTEXT"))
+    texts = s.lines(complete=True)
     said = [e[:95] for e in S_events(out)]
     check(texts == said[:len(texts)] and len(texts) >= len(said) - 2, "every console line as STATUSTEXT:\n%s\n%s"
           % (texts, said))
@@ -621,22 +621,6 @@ def link_counts(out):
                   r"sets refused, (\d+) commands unsupported", out)
     check(m is not None, "link summary line:\n" + out[-2000:])
     return tuple(map(int, m.groups()))
-
-
-def statustext_lines(msgs):
-    """STATUSTEXT reassembled: chunks of one id in chunk_seq order, up to the short one."""
-    lines, parts = [], {}
-    for m in msgs:
-        if m.id == 0:
-            lines.append(m.text)
-            continue
-        parts.setdefault(m.id, []).append((m.chunk_seq, m.text))
-        if len(m.text) < 50:
-            chunks = parts.pop(m.id)
-            check([c for c, _ in chunks] == list(range(len(chunks))), "chunks of id %d: %s" % (m.id, chunks))
-            lines.append("".join(t for _, t in chunks))
-    check(not parts, "unfinished STATUSTEXT chunks: %s" % parts)
-    return lines
 
 
 def S_events(out):
@@ -731,7 +715,7 @@ def t_mavlink_mission_upload(S):
         s.wait("STATUSTEXT", lambda m: m.text == "mission: complete", seconds=60)
         s.wait("HEARTBEAT", lambda m: not (m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED))
         flown = [re.match(r"mission: #(\d+) (\w+) started", t).group(1, 2)
-                 for t in statustext_lines(s.of("STATUSTEXT")) if re.match(r"mission: #\d+ \w+ started", t)]
+                 for t in s.lines(complete=True) if re.match(r"mission: #\d+ \w+ started", t)]
         check(flown == [("1", "TAKEOFF"), ("2", "WAYPOINT"), ("3", "WAYPOINT"), ("4", "WAYPOINT"),
                         ("5", "WAYPOINT"), ("6", "LAND")], "the uploaded mission flown as the file: %s" % flown)
         # rejected uploads, each leaving plain on board
@@ -819,14 +803,6 @@ def heartbeat_mode(s, mav, custom, seconds=30):
                   since=s.sent_at)
 
 
-def texts_since(s, n0):
-    """Console lines from the n0-th STATUSTEXT on (a long line cut by n0 is left out)."""
-    msgs = s.of("STATUSTEXT")[n0:]
-    while msgs and msgs[0].id != 0 and msgs[0].chunk_seq != 0:
-        msgs = msgs[1:]
-    return statustext_lines(msgs)
-
-
 def t_mavlink_commands(S):
     """COMMAND_LONG and SET_MODE as ArduPilot answers them: arming refused with the pre-arm
     reason until the checks pass, AUTO refused while disarmed, MISSION_START, a disarm in flight
@@ -855,7 +831,7 @@ def t_mavlink_commands(S):
         check(s.command(mav.MAV_CMD_DO_SET_MODE, 1.0, float(mav.COPTER_MODE_LOITER)).result ==
               mav.MAV_RESULT_ACCEPTED, "LOITER")
         heartbeat_mode(s, mav, mav.COPTER_MODE_LOITER)
-        n0 = len(s.of("STATUSTEXT"))
+        n0 = s.mark()
         check(s.command(mav.MAV_CMD_DO_SET_MODE, 1.0, float(mav.COPTER_MODE_AUTO)).result ==
               mav.MAV_RESULT_ACCEPTED, "AUTO again")
         resumed = s.sent_at
@@ -864,7 +840,7 @@ def t_mavlink_commands(S):
         check(s.command(mav.MAV_CMD_NAV_RETURN_TO_LAUNCH).result == mav.MAV_RESULT_ACCEPTED, "RTL")
         heartbeat_mode(s, mav, mav.COPTER_MODE_RTL)
         s.wait_text(lambda m: m.text.startswith("vehicle: landed at"), seconds=60, since=s.sent_at)
-        landed = [t for t in texts_since(s, n0) if t.startswith("vehicle: landed at")][-1]
+        landed = [t for t in s.lines(n0) if t.startswith("vehicle: landed at")][-1]
         check(float(re.search(r"landed at ([0-9.]+) m", landed).group(1)) < 2.0, "RTL lands home: %s" % landed)
         s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1 and not (m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED))
         s.conn.mav.set_mode_send(1, mav.MAV_MODE_FLAG_CUSTOM_MODE_ENABLED, mav.COPTER_MODE_STABILIZE)
@@ -875,11 +851,11 @@ def t_mavlink_commands(S):
         check(s.command(mav.MAV_CMD_MISSION_START).result == mav.MAV_RESULT_ACCEPTED, "MISSION_START")
         s.wait_text(lambda m: m.text.startswith("mission: #3 WAYPOINT started"), seconds=60,
                since=s.sent_at)
-        n1 = len(s.of("STATUSTEXT"))
+        n1 = s.mark()
         check(s.command(mav.MAV_CMD_NAV_LAND).result == mav.MAV_RESULT_ACCEPTED, "LAND")
         heartbeat_mode(s, mav, mav.COPTER_MODE_LAND)
         s.wait_text(lambda m: m.text.startswith("vehicle: landed at"), seconds=60, since=s.sent_at)
-        landed = [t for t in texts_since(s, n1) if t.startswith("vehicle: landed at")][-1]
+        landed = [t for t in s.lines(n1) if t.startswith("vehicle: landed at")][-1]
         check(float(re.search(r"landed at ([0-9.]+) m", landed).group(1)) > 20.0, "LAND lands there: %s" % landed)
         s.stop()
     counts = link_counts(s.out)
@@ -901,7 +877,7 @@ def t_mavlink_link_loss(S):
             if set_to is not None:
                 s.conn.mav.param_set_send(1, 1, b"FS_GCS_ENABLE", set_to, mav.MAV_PARAM_TYPE_INT8)
                 check(s.wait("PARAM_VALUE").param_value == set_to, "FS_GCS_ENABLE %s" % set_to)
-            n0 = len(s.of("STATUSTEXT"))
+            n0 = s.mark()
             a, b = s.arm_and_auto() if action == "RTL" else (
                 s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0), s.command(mav.MAV_CMD_MISSION_START))
             check(a.result == mav.MAV_RESULT_ACCEPTED and b.result == mav.MAV_RESULT_ACCEPTED,
@@ -920,7 +896,7 @@ def t_mavlink_link_loss(S):
                 s.wait_text(lambda m: m.text == "mission: complete", seconds=60, since=quiet)
             else:
                 s.wait_text(lambda m: m.text.startswith("vehicle: landed at"), seconds=60, since=quiet)
-            landed = [t for t in texts_since(s, n0) if t.startswith("vehicle: landed at")][-1]
+            landed = [t for t in s.lines(n0) if t.startswith("vehicle: landed at")][-1]
             dist = float(re.search(r"landed at ([0-9.]+) m", landed).group(1))
             check((dist < 2.0) if action == "RTL" else (dist > 20.0) if action == "LAND" else True,
                   "%s: %s" % (action, landed))
@@ -1155,7 +1131,8 @@ def main(argv):
         try:
             fn(S)
             print("PASS %-62s %6.1f s" % (name, time.time() - t1))
-        except (Fail, subprocess.TimeoutExpired, KeyError, TypeError, AttributeError, TimeoutError) as e:
+        except (Fail, subprocess.TimeoutExpired, KeyError, TypeError, AttributeError, TimeoutError,
+                ValueError) as e:
             failed += 1
             print("FAIL %-62s %6.1f s\n     %s" % (name, time.time() - t1, str(e).replace("\n", "\n     ")))
     print("test-vehicle: %d/%d passed in %.1f s" % (n - failed, n, time.time() - t0))
