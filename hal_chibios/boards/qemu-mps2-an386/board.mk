@@ -30,3 +30,8 @@ BOARD_INC  := $(BOARDDIR)
 
 # How to run it (used by the run target).
 QEMU_MACHINE := mps2-an386
+
+# The link UART (hal_chibios/include/fw_link.h: UART1, interrupt-driven
+# receive into a kernel byte ring): an app that uses it adds this to its
+# sources (it needs the kernel's headers, which not every app has).
+BOARD_LINK_CSRC := $(BOARDDIR)/mps2_link.c

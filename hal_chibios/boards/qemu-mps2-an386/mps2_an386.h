@@ -75,17 +75,34 @@ typedef enum IRQn {
 /* CMSDK APB UART. */
 typedef struct {
   volatile uint32_t DATA;       /* +0x00 data                              */
-  volatile uint32_t STATE;      /* +0x04 bit0 TX full, bit1 RX full        */
-  volatile uint32_t CTRL;       /* +0x08 bit0 TX enable, bit1 RX enable    */
-  volatile uint32_t INTSTATUS;  /* +0x0C interrupt status / clear          */
+  volatile uint32_t STATE;      /* +0x04 full and overrun flags (below)    */
+  volatile uint32_t CTRL;       /* +0x08 enables (below)                   */
+  volatile uint32_t INTSTATUS;  /* +0x0C interrupt status, write 1 to clear */
   volatile uint32_t BAUDDIV;    /* +0x10 baud divider (>= 16)              */
 } CMSDK_UART_TypeDef;
 
+/* STATE: bit0 TX full, bit1 RX full (a byte to read), bit2 TX overrun,
+   bit3 RX overrun (write 1 to clear the overrun bits). */
 #define CMSDK_UART_STATE_TXFULL 0x1U
+#define CMSDK_UART_STATE_RXFULL 0x2U
+#define CMSDK_UART_STATE_TXOVR  0x4U
+#define CMSDK_UART_STATE_RXOVR  0x8U
+/* CTRL: bit0 TX enable, bit1 RX enable, bit2 TX interrupt enable, bit3 RX
+   interrupt enable. */
 #define CMSDK_UART_CTRL_TXEN    0x1U
+#define CMSDK_UART_CTRL_RXEN    0x2U
+#define CMSDK_UART_CTRL_TXIE    0x4U
+#define CMSDK_UART_CTRL_RXIE    0x8U
+/* INTSTATUS: bit0 TX, bit1 RX, bit2 TX overrun, bit3 RX overrun. */
+#define CMSDK_UART_INT_TX       0x1U
+#define CMSDK_UART_INT_RX       0x2U
 
+/* UART0 is the console; UART1 the link UART (fw_link.h). QEMU connects
+   UARTn to its n-th -serial option. */
 #define CMSDK_UART0_BASE        0x40004000UL
 #define CMSDK_UART0             ((CMSDK_UART_TypeDef *)CMSDK_UART0_BASE)
+#define CMSDK_UART1_BASE        0x40005000UL
+#define CMSDK_UART1             ((CMSDK_UART_TypeDef *)CMSDK_UART1_BASE)
 
 #ifdef __cplusplus
 }

@@ -28,3 +28,12 @@ USE_PROCESS_STACKSIZE := 0x2000
 # The vehicle and its simulated world are float code: use the Cortex-M4F's FPU (hard-float
 # ABI; the RT port then saves the FP context of the threads that use it).
 USE_FPU := hard
+# The link UART (hal_chibios/include/fw_link.h): the MAVLink link's bytes.
+APP_EXTRA_CSRC  += $(BOARD_LINK_CSRC)
+# GCS=1: the ground-station session build (make test-vehicle-fw, make fw-gcs; main.c): FW_GCS,
+# and the idle thread sleeps in WFI, so that QEMU -icount sees the guest idle: sleep=off skips
+# idle time, sleep=on lets it pass at the host clock's pace (hal_chibios/README.md, "The link
+# UART and time"). GCS_LIMIT_S: the session's length in vehicle seconds (default 1800).
+ifneq ($(strip $(GCS)),)
+APP_EXTRA_DEFS  += -DFW_GCS=1 -DCORTEX_ENABLE_WFI_IDLE=TRUE $(if $(GCS_LIMIT_S),-DFW_GCS_LIMIT_S=$(GCS_LIMIT_S)u)
+endif
