@@ -62,6 +62,8 @@ help:
 	@echo "  make mavlink-headers the MAVLink C headers (pymavlink's mavgen) into build/mavlink"
 	@echo "  make sched-check     Z3: is the vehicle's task table (vehicle/tasks.def) schedulable?"
 	@echo "  make firmware CHIBIOS=/path [BOARD=...] [APP=...];  make qemu-smoke CHIBIOS=/path"
+	@echo "  make test-vehicle-fw CHIBIOS=/path   the MAVLink client tests against the firmware (QEMU)"
+	@echo "  make fw-gcs CHIBIOS=/path [FW_GCS_PORT=5760]   the firmware for your ground station (TCP)"
 	@echo "  make demo            run a task table on the host port and print its statistics"
 	@echo "  make bench           benchmarks side by side with boost and ArduPilot-style references"
 

@@ -11,9 +11,11 @@ records every message the vehicle sends.
 """
 
 import os
+import re
 import signal
 import subprocess
 import sys
+import threading
 import time
 import types
 
@@ -42,6 +44,9 @@ class Session:
         speedup = float(args[args.index("--speedup") + 1]) if "--speedup" in args else 1.0
         self.hb_period = 1.0 / speedup
         self.hb_on = True  # False: the ground station goes silent (link-loss tests)
+        # every wait below is seconds * scale of wall time (FirmwareSession: the vehicle's time does
+        # not run at --speedup there)
+        self.scale = 1.0
         self.msgs = []          # (wall time, message) of every message received, in order
         self.rc, self.out, self.err = None, "", ""
 
@@ -51,7 +56,7 @@ class Session:
         port = self.conn.port.getsockname()[1]
         self.proc = subprocess.Popen([self.binary, "--mavlink", "udp:127.0.0.1:%d" % port] + self.args,
                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
-        self.deadline = time.time() + self.timeout
+        self.deadline = time.time() + self.timeout * self.scale
         self.last_hb = 0.0
         return self
 
@@ -88,7 +93,7 @@ class Session:
         if self.proc.poll() is not None and m is None:
             raise Timeout("the SITL exited (rc %s)" % self.proc.returncode)
         if time.time() > self.deadline:
-            raise Timeout("no answer in %d s" % self.timeout)
+            raise Timeout("no answer in %d s" % (self.timeout * self.scale))
         return m
 
     def mark(self):
@@ -102,7 +107,7 @@ class Session:
             for _, m in self.msgs[since:]:
                 if m.get_type() == mtype and cond(m):
                     return m
-        end = time.time() + seconds
+        end = time.time() + seconds * self.scale
         while time.time() < end:
             m = self.poll()
             if m is not None and m.get_type() == mtype and cond(m):
@@ -139,7 +144,7 @@ class Session:
         line), from now on or from the mark since."""
         start = self.mark() if since is None else since
         seen = 0
-        end = time.time() + seconds
+        end = time.time() + seconds * self.scale
         while True:
             lines = self.lines(start)
             for t in lines[seen:]:
@@ -164,7 +169,7 @@ class Session:
         self.conn.mav.mission_count_send(sys_, comp, len(items), mav.MAV_MISSION_TYPE_MISSION)
         asked = []
         self.acks = []  # every MISSION_ACK of this upload, INVALID_SEQUENCE ones included
-        end = time.time() + seconds
+        end = time.time() + seconds * self.scale
         while time.time() < end:
             m = self.poll()
             if m is None:
@@ -203,7 +208,7 @@ class Session:
     def arm_and_auto(self, seconds=30):
         """Arm (again while the pre-arm checks refuse: the barometer calibrates, the GPS needs
         fixes), then AUTO: the ACKs of both."""
-        end = time.time() + seconds
+        end = time.time() + seconds * self.scale
         while True:
             a = self.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0)
             if a.result == mav.MAV_RESULT_ACCEPTED or time.time() > end:
@@ -223,6 +228,139 @@ class Session:
             items.append(self.wait("MISSION_ITEM_INT", lambda m, s=seq: m.seq == s, seconds=seconds))
         self.conn.mav.mission_ack_send(1, 1, mav.MAV_MISSION_ACCEPTED, mav.MAV_MISSION_TYPE_MISSION)
         return items
+
+
+class Unsupported(Exception):
+    """What the firmware session cannot do (the reason)."""
+
+
+# QEMU for the firmware's ground-station session: the console (UART0) on stdio, the link UART
+# (UART1: QEMU gives UARTn its n-th -serial) a TCP server on a free port that QEMU waits on
+# before the guest starts. -icount shift=5,sleep=off: guest time is the instruction count (32 ns
+# each; tasks.def's costs were measured so) and idle time (the idle thread sleeps in WFI) is
+# skipped, so vehicle time runs ahead of the host's clock by a factor that depends on the host
+# and the guest's load (hal_chibios/README.md: "The link UART and time").
+FW_QEMU = ["qemu-system-arm", "-M", "mps2-an386", "-display", "none", "-monitor", "none",
+           "-serial", "stdio", "-serial", "tcp:127.0.0.1:0,server=on,wait=on,nodelay=on",
+           "-semihosting-config", "enable=on,target=native", "-icount", "shift=5,sleep=off"]
+# The slowest vehicle time per wall second assumed (measured 2-5 on 2 shared cores): the tests'
+# waits, written for --speedup N (N vehicle seconds per wall second), are stretched by N / this.
+FW_MIN_RATE = 1.0
+
+
+class FirmwareSession(Session):
+    """The ChibiOS firmware's ground-station session (the FW_GCS=1 build: make test-vehicle-fw) under
+    QEMU, its link UART a TCP socket, in place of the SITL. The arguments are the SITL's: --quiet
+    (the session build prints no status lines anyway), --speedup N (only the scale of the waits and
+    the heartbeat rate: vehicle time runs at the pace QEMU gives it) and a .waypoints file, which
+    this ground station uploads over MAVLink first (the firmware has no file system). Anything else
+    raises Unsupported. stop() sends 'q' on the console: the firmware prints its summary and exits
+    through semihosting (out, rc)."""
+
+    def __init__(self, elf, args, timeout=90):
+        super().__init__(elf, args, timeout)
+        self.mission = None
+        speedup = 1.0
+        i = 0
+        while i < len(args):
+            a = args[i]
+            if a == "--quiet":
+                pass
+            elif a == "--speedup" and i + 1 < len(args):
+                speedup = float(args[i + 1])
+                i += 1
+            elif not a.startswith("-") and a.endswith(".waypoints") and self.mission is None:
+                self.mission = a
+            else:
+                raise Unsupported("the firmware session has no %s (a SITL option)" % a)
+            i += 1
+        self.scale = speedup / FW_MIN_RATE
+        self.console, self.errbuf = [], []  # chunks of the console (UART0) and of QEMU's stderr
+        self.replay = []
+
+    def __enter__(self):
+        self.proc = subprocess.Popen(FW_QEMU + ["-kernel", self.binary], stdin=subprocess.PIPE,
+                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=ROOT)
+        # "QEMU waiting for connection on: disconnected:tcp:127.0.0.1:PORT,server=on"
+        line = self.proc.stderr.readline().decode(errors="replace")
+        ports = re.findall(r"tcp:127\.0\.0\.1:(\d+)", line)
+        if not ports or ports[-1] == "0":
+            self.proc.kill()
+            raise Timeout("QEMU did not open the link's socket: %s" % line.strip())
+        # the console and QEMU's messages are read all along (a full pipe would stall the UART)
+        self.readers = [threading.Thread(target=self._read, args=(f, buf), daemon=True)
+                        for f, buf in ((self.proc.stdout, self.console), (self.proc.stderr, self.errbuf))]
+        for t in self.readers:
+            t.start()
+        end = time.time() + 10
+        while True:
+            try:
+                self.conn = mavutil.mavlink_connection("tcp:127.0.0.1:%s" % ports[-1], source_system=GCS_SYSID,
+                                                       source_component=GCS_COMPID, dialect="ardupilotmega",
+                                                       autoreconnect=False)
+                break
+            except OSError:
+                if time.time() > end:
+                    self.proc.kill()
+                    raise
+                time.sleep(0.05)
+        self.deadline = time.time() + self.timeout * self.scale
+        self.last_hb = 0.0
+        if self.mission is not None:
+            ack, _ = self.upload(wpl_items(self.mission))
+            if ack.type != mav.MAV_MISSION_ACCEPTED:
+                self.stop()
+                raise Timeout("the firmware refused %s: %s" % (self.mission, ack))
+            # the test's first look for the vehicle's HEARTBEAT is answered with the last one that
+            # came during the upload, as the SITL's first one would be: its next requests then reach
+            # the vehicle as early in its boot as on the SITL (tests that expect arming refused
+            # before the pre-arm checks pass depend on it)
+            self.replay = [m for _, m in self.msgs if m.get_type() == "HEARTBEAT"][-1:]
+        return self
+
+    def poll(self, block=0.05):
+        if self.replay:
+            return self.replay.pop()
+        return super().poll(block)
+
+    @staticmethod
+    def _read(f, buf):
+        for chunk in iter(lambda: f.read1(4096), b""):
+            buf.append(chunk)
+
+    def stop(self):
+        """The ground station falls silent, then 'q' on the console: the summary, then the exit
+        through semihosting. (On a byte stream a frame can be cut by the end of the session: the
+        summary would count its first bytes as not in a valid frame. A UDP datagram is whole.)"""
+        if self.rc is None:
+            if self.proc.poll() is None:
+                self.hb_on = False
+                end = time.time() + 0.3
+                try:
+                    while time.time() < end:
+                        self.poll()
+                except Timeout:
+                    pass
+                try:
+                    self.proc.stdin.write(b"q")
+                    self.proc.stdin.flush()
+                except OSError:
+                    pass
+            try:
+                self.proc.wait(timeout=60)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+            for t in self.readers:
+                t.join(timeout=10)
+            self.rc = self.proc.returncode
+            self.out = b"".join(self.console).decode(errors="replace").replace("\r", "")
+            self.err = b"".join(self.errbuf).decode(errors="replace")
+            # the firmware's own checks (every byte received reached the vehicle, every byte sent
+            # left, the log intact, no task over its budget): a failed one fails the test
+            failed = [l for l in self.out.splitlines() if l.startswith(("CHECK FAILED", "HALT", "FAULT"))]
+            if failed or "== flight summary ==" not in self.out:
+                raise ValueError("the firmware's session: %s\n%s" % (failed, self.out[-1500:]))
 
 
 def wpl_items(path):
