@@ -22,7 +22,7 @@ CHECK_TEST_time    := TimeExt*:TimeTicksToUs*
 CHECK_TEST_status  := Status*
 CHECK_TEST_bus     := Bus*
 CHECK_TEST_wq      := Wq*
-CHECK_TEST_mission := Mission.*:MissionCheck.*:MissionState.*:MissionStatus.*
+CHECK_TEST_mission := Mission.*:MissionCheck.*:MissionState.*:MissionStatus.*:MissionReplace.*
 
 CHECK_CBMC_ring    := mt_bring_
 CHECK_CBMC_objring := mt_oring_

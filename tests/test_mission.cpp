@@ -692,6 +692,155 @@ TEST(MissionState, RestartCurrent)
     EXPECT_EQ(mt_mission_restart_current(v.m.get()), MT_E_STATE);
 }
 
+// mt_mission_replace: a running mission swapped between two updates (an upload in flight).
+static mt_status_t Replace(Vehicle &v, const std::vector<mt_mission_cmd_t> &cmds, uint16_t *bad)
+{
+    return mt_mission_replace(v.m.get(), cmds.data(), static_cast<uint16_t>(cmds.size()), bad);
+}
+
+TEST(MissionReplace, ContinuesAtTheSameIndexWithTheNewCommand)
+{
+    Vehicle v;
+    v.verify_after[2] = 100;
+    ASSERT_EQ(v.Load({Home(), Wp(1), Wp(2), Wp(3)}), MT_OK);
+    ASSERT_EQ(mt_mission_start(v.m.get()), MT_OK);
+    v.Run(3); // 1 verified, 2 flying
+    ASSERT_EQ(v.m->nav, 2);
+    const uint32_t gen = v.m->generation;
+    uint16_t bad = 0;
+    std::vector<mt_mission_cmd_t> next{Home(), Wp(7), Wp(8), Servo(), Wp(9), Land()};
+    ASSERT_EQ(Replace(v, next, &bad), MT_OK);
+    EXPECT_EQ(bad, MT_MISSION_NONE);
+    EXPECT_EQ(v.m->state, MT_MISSION_RUNNING);
+    EXPECT_EQ(v.m->total, 6);
+    EXPECT_EQ(v.m->generation, gen + 1);
+    EXPECT_EQ(v.m->nav, 2); // the command now at index 2 was started
+    EXPECT_EQ(v.Starts(), "1 2 2");
+    mt_mission_cmd_t out{};
+    bool cur = false;
+    ASSERT_EQ(mt_mission_get(v.m.get(), 2, &out, &cur), MT_OK);
+    EXPECT_TRUE(cur);
+    EXPECT_EQ(out.x, Wp(8).x);
+    v.verify_after.clear();
+    v.Run();
+    EXPECT_EQ(v.Starts(), "1 2 2 3 4 5");
+    EXPECT_EQ(v.completes, 1);
+}
+
+TEST(MissionReplace, AtADoCommandItStartsAndTheWalkGoesOn)
+{
+    Vehicle v;
+    v.verify_after[2] = 100;
+    ASSERT_EQ(v.Load({Home(), Wp(1), Wp(2), Wp(3)}), MT_OK);
+    ASSERT_EQ(mt_mission_start(v.m.get()), MT_OK);
+    v.Run(3);
+    ASSERT_EQ(v.m->nav, 2);
+    uint16_t bad = 0;
+    ASSERT_EQ(Replace(v, {Home(), Wp(1), Servo(), Wp(5)}, &bad), MT_OK);
+    EXPECT_EQ(v.Starts(), "1 2 2 3");
+    EXPECT_EQ(v.m->nav, 3);
+    EXPECT_EQ(v.m->do_cmd, 2);
+}
+
+TEST(MissionReplace, IndexGoneStopsWithNothingSet)
+{
+    Vehicle v;
+    v.verify_after[3] = 100;
+    ASSERT_EQ(v.Load({Home(), Wp(1), Wp(2), Wp(3)}), MT_OK);
+    ASSERT_EQ(mt_mission_start(v.m.get()), MT_OK);
+    v.Run(5);
+    ASSERT_EQ(v.m->nav, 3);
+    const size_t calls = v.log.size();
+    uint16_t bad = 0;
+    ASSERT_EQ(Replace(v, {Home(), Wp(4), Wp(5)}, &bad), MT_OK);
+    EXPECT_EQ(v.m->state, MT_MISSION_STOPPED);
+    EXPECT_EQ(v.m->nav, MT_MISSION_NONE);
+    EXPECT_EQ(v.m->nav_idx, MT_MISSION_NONE);
+    EXPECT_EQ(v.m->do_cmd, MT_MISSION_NONE);
+    EXPECT_EQ(v.m->total, 3);
+    EXPECT_EQ(v.log.size(), calls); // no callback: the vehicle holds
+    EXPECT_EQ(v.completes, 0);
+    // an empty mission (home only) is held the same way
+    ASSERT_EQ(mt_mission_start(v.m.get()), MT_OK);
+    ASSERT_EQ(Replace(v, {Home()}, &bad), MT_OK);
+    EXPECT_EQ(v.m->state, MT_MISSION_STOPPED);
+    EXPECT_EQ(v.m->total, 1);
+}
+
+TEST(MissionReplace, InvalidListChangesNothing)
+{
+    Vehicle v;
+    v.verify_after[2] = 100;
+    ASSERT_EQ(v.Load({Home(), Wp(1), Wp(2), Wp(3)}), MT_OK);
+    ASSERT_EQ(mt_mission_start(v.m.get()), MT_OK);
+    v.Run(3);
+    const mt_mission_t before = *v.m;
+    const size_t calls = v.log.size();
+    uint16_t bad = 0;
+    mt_mission_cmd_t far = Wp(1);
+    far.x = MT_MISSION_LAT_MAX + 1; // beyond 90 degrees
+    EXPECT_EQ(Replace(v, {Home(), Wp(1), far}, &bad), MT_E_MISSION_LOCATION);
+    EXPECT_EQ(bad, 2);
+    EXPECT_EQ(Replace(v, {Home(), Wp(1), Jump(9, 1)}, &bad), MT_E_MISSION_JUMP);
+    EXPECT_EQ(bad, 2);
+    EXPECT_EQ(Replace(v, {}, &bad), MT_E_MISSION_SIZE);
+    EXPECT_EQ(bad, 0);
+    EXPECT_EQ(0, std::memcmp(&before, v.m.get(), sizeof before));
+    EXPECT_EQ(v.log.size(), calls);
+}
+
+TEST(MissionReplace, RefusedUnlessRunning)
+{
+    Vehicle v;
+    uint16_t bad = 0;
+    EXPECT_EQ(Replace(v, {Home(), Wp(1)}, &bad), MT_E_STATE);
+    EXPECT_EQ(bad, MT_MISSION_NONE);
+    ASSERT_EQ(v.Load({Home(), Wp(1), Wp(2)}), MT_OK);
+    EXPECT_EQ(Replace(v, {Home(), Wp(1)}, &bad), MT_E_STATE);
+    ASSERT_EQ(mt_mission_start(v.m.get()), MT_OK);
+    v.Run();
+    ASSERT_EQ(v.m->state, MT_MISSION_COMPLETE);
+    EXPECT_EQ(Replace(v, {Home(), Wp(1)}, &bad), MT_E_STATE);
+    EXPECT_EQ(v.m->total, 3);
+}
+
+TEST(MissionReplace, JumpCountersKeptByIndexAsArduPilotKeysThem)
+{
+    // 1 wp, 2 wp, 3 jump->1 x3, 4 land: replaced after the jump was taken twice
+    Vehicle v;
+    ASSERT_EQ(v.Load({Home(), Wp(1), Wp(2), Jump(1, 3), Land()}), MT_OK);
+    ASSERT_EQ(mt_mission_start(v.m.get()), MT_OK);
+    v.verify_after[2] = 100;
+    while (v.m->state == MT_MISSION_RUNNING && mt_mission_jump_count(v.m.get(), 3) < 2) {
+        mt_mission_update(v.m.get());
+    }
+    v.Run(3); // flying 2 again, third lap
+    ASSERT_EQ(mt_mission_jump_count(v.m.get(), 3), 2);
+    ASSERT_EQ(v.m->nav, 2);
+    uint16_t bad = 0;
+    v.starts.clear();
+    // same jump at 3 with 5 repeats: 2 taken, 3 left (a fresh counter would give 5)
+    ASSERT_EQ(Replace(v, {Home(), Wp(1), Wp(2), Jump(1, 5), Land()}, &bad), MT_OK);
+    EXPECT_EQ(mt_mission_jump_count(v.m.get(), 3), 2);
+    v.verify_after.clear();
+    v.Run();
+    EXPECT_EQ(v.Starts(), "2 1 2 1 2 1 2 4");
+    // a smaller repeat count than the taken count: kept at the new count, so it falls through
+    Vehicle w;
+    ASSERT_EQ(w.Load({Home(), Wp(1), Wp(2), Jump(1, 3), Land()}), MT_OK);
+    ASSERT_EQ(mt_mission_start(w.m.get()), MT_OK);
+    while (w.m->state == MT_MISSION_RUNNING && mt_mission_jump_count(w.m.get(), 3) < 2) {
+        mt_mission_update(w.m.get());
+    }
+    ASSERT_EQ(mt_mission_jump_count(w.m.get(), 3), 2);
+    ASSERT_EQ(Replace(w, {Home(), Wp(1), Wp(2), Jump(1, 1), Land()}, &bad), MT_OK);
+    EXPECT_EQ(mt_mission_jump_count(w.m.get(), 3), 1);
+    // a jump where the old list had a waypoint starts at 0; and one where it had a jump
+    // whose index the new list moved is not kept either
+    ASSERT_EQ(Replace(w, {Home(), Wp(1), Wp(2), Wp(3), Jump(1, 2), Land()}, &bad), MT_OK);
+    EXPECT_EQ(mt_mission_jump_count(w.m.get(), 4), 0);
+}
+
 TEST(MissionState, AllNavsRefusedCompletesWithoutSpinning)
 {
     // AP's advance gives up after 255 commands and stays RUNNING with nothing loaded,

@@ -55,22 +55,20 @@ static void copy_cmd(mt_mission_cmd_t *dst, const mt_mission_cmd_t *src)
 }
 
 /* Store checked command c as entry i of a list of n: its class, and for a
- * jump its resolved target and repeat count; the jump counter starts at 0. */
+ * jump its resolved target and repeat count (the counter is keep_counts'). */
 /*@ requires \valid(m) && 1 <= i < n <= MT_CFG_MISSION_MAX_CMDS;
     requires \valid_read(c) && \separated(c, m);
     requires MtMissionIsJumpId(c->id) ==> 1 <= tgt < n && MtMissionRepeatOk(c->param[1]);
     assigns m->cmd[i].id, m->cmd[i].frame, m->cmd[i].options, m->cmd[i].param[0 .. 3],
             m->cmd[i].x, m->cmd[i].y, m->cmd[i].z,
-            m->kind[i], m->target[i], m->repeat[i], m->count[i];
+            m->kind[i], m->target[i], m->repeat[i];
     ensures kind: (m->kind[i] == MT_MISSION_KIND_NAV || m->kind[i] == MT_MISSION_KIND_DO ||
              m->kind[i] == MT_MISSION_KIND_JUMP || m->kind[i] == MT_MISSION_KIND_TAG) &&
             (m->kind[i] == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(m->cmd[i].id)) &&
             (m->kind[i] == MT_MISSION_KIND_TAG <==> m->cmd[i].id == MT_MAV_CMD_JUMP_TAG);
     ensures jump: (m->kind[i] == MT_MISSION_KIND_JUMP ==>
-                1 <= m->target[i] < n && -1 <= m->repeat[i] <= MT_MISSION_REPEAT_MAX);
-    ensures counter: (m->kind[i] == MT_MISSION_KIND_JUMP ==>
-                (m->repeat[i] >= 0 ==> 0 <= m->count[i] <= m->repeat[i]) &&
-                (m->repeat[i] < 0 ==> m->count[i] == 0));
+                1 <= m->target[i] < n && m->repeat[i] == c->param[1] / MT_MISSION_MILLI &&
+                -1 <= m->repeat[i] <= MT_MISSION_REPEAT_MAX);
     ensures MtMissionSameCmd(&m->cmd[i], c);
 */
 static void put_cmd(mt_mission_t *m, uint16_t i, const mt_mission_cmd_t *c, uint16_t tgt, uint16_t n)
@@ -85,15 +83,55 @@ static void put_cmd(mt_mission_t *m, uint16_t i, const mt_mission_cmd_t *c, uint
     m->kind[i] = k;
     m->target[i] = 0u;
     m->repeat[i] = 0;
-    m->count[i] = 0;
     if (k == MT_MISSION_KIND_JUMP) {
         m->target[i] = tgt;
         m->repeat[i] = (int16_t)(c->param[1] / MT_MISSION_MILLI);
     }
 }
 
-/* Cursors of a freshly applied list of n commands (entries already stored). */
+/* The jump counters of checked list cmds over the list of `before`
+ * commands it replaces (0: none), read before any entry is overwritten: a
+ * counter is kept where both lists have a jump at the index, at most the new
+ * repeat count (AP keys its jump tracking by index; a count above the repeat
+ * count falls through and resets exactly as one equal to it does); every
+ * other counter is 0. */
+/*@ requires \valid(m) && 1 <= n <= MT_CFG_MISSION_MAX_CMDS && before <= MT_CFG_MISSION_MAX_CMDS;
+    requires \valid_read(cmds + (0 .. n - 1)) && \separated(cmds + (0 .. n - 1), m);
+    requires reps: \forall integer j; 1 <= j < n ==> MtMissionIsJumpId(cmds[j].id) ==>
+        MtMissionRepeatOk(cmds[j].param[1]);
+    assigns m->count[1 .. n - 1];
+    ensures kept: \forall integer j; 1 <= j < n ==>
+        MtMissionKeptFor(\old(m->kind[j]), \old(m->count[j]), j, before, &cmds[j], m->count[j]);
+    ensures fits: \forall integer j; 1 <= j < n ==> MtMissionCountFits(m->count[j], &cmds[j]);
+*/
+static void keep_counts(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t before)
+{
+    uint16_t i;
+
+    /*@ loop invariant 1 <= i <= n;
+        loop invariant kept: \forall integer j; 1 <= j < i ==>
+            MtMissionKeptFor(\at(m->kind[j], Pre), \at(m->count[j], Pre), j, before, &cmds[j], m->count[j]);
+        loop invariant fits: \forall integer j; 1 <= j < i ==> MtMissionCountFits(m->count[j], &cmds[j]);
+        loop invariant ahead: \forall integer j; i <= j < n ==> m->count[j] == \at(m->count[j], Pre);
+        loop assigns i, m->count[1 .. n - 1];
+        loop variant n - i;
+    */
+    for (i = 1u; i < n; i++) {
+        int16_t c = 0;
+        if ((i < before) && (m->kind[i] == MT_MISSION_KIND_JUMP) && (m->count[i] > 0) &&
+            (mt_mission_kind_of(cmds[i].id) == MT_MISSION_KIND_JUMP) && (cmds[i].param[1] >= 0)) {
+            int32_t r = cmds[i].param[1] / MT_MISSION_MILLI;
+            c = ((int32_t)m->count[i] < r) ? m->count[i] : (int16_t)r;
+        }
+        m->count[i] = c;
+    }
+}
+
+/* Cursors of a freshly applied list of n commands (entries already stored,
+ * from cmds). */
 /*@ requires \valid(m) && 1 <= n <= MT_CFG_MISSION_MAX_CMDS;
+    requires \valid_read(cmds + (0 .. n - 1)) && \separated(cmds + (0 .. n - 1), m);
+    requires copied: MtMissionCopied(m, cmds, n);
     requires home: m->kind[0] == MT_MISSION_KIND_HOME;
     requires kinds: \forall integer j; 1 <= j < n ==>
             (m->kind[j] == MT_MISSION_KIND_NAV || m->kind[j] == MT_MISSION_KIND_DO ||
@@ -112,9 +150,12 @@ static void put_cmd(mt_mission_t *m, uint16_t i, const mt_mission_cmd_t *c, uint
     ensures m->nav_idx == MT_MISSION_NONE && m->do_idx == MT_MISSION_NONE;
     ensures m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF;
     ensures tables: MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m);
+    ensures copied: MtMissionCopied(m, cmds, n);
+    ensures counts: \forall integer j; 0 <= j < MT_CFG_MISSION_MAX_CMDS ==> m->count[j] == \old(m->count[j]);
 */
-static void reset_cursors(mt_mission_t *m, uint16_t n)
+static void reset_cursors(mt_mission_t *m, uint16_t n, const mt_mission_cmd_t *cmds)
 {
+    (void)cmds; /* the contract's list, passed through */
     m->total = n;
     if (m->generation < 0xFFFFFFFFu) {
         m->generation++;
@@ -128,13 +169,14 @@ static void reset_cursors(mt_mission_t *m, uint16_t n)
     m->prev_nav = MT_MISSION_NONE;
 }
 
-/* Entries 1 .. n-1 from the checked list (home is stored by apply). */
+/* Entries 1 .. n-1 from the checked list (home is stored by apply, the
+ * counters by keep_counts, which put_all keeps). */
 /*@ requires \valid(m) && 1 <= n <= MT_CFG_MISSION_MAX_CMDS;
     requires \separated(m, mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
     requires MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
     requires \separated(cmds + (0 .. n - 1), m);
-    assigns m->cmd[1 .. n - 1], m->kind[1 .. n - 1], m->target[1 .. n - 1], m->repeat[1 .. n - 1],
-            m->count[1 .. n - 1];
+    requires fits: \forall integer j; 1 <= j < n ==> MtMissionCountFits(m->count[j], &cmds[j]);
+    assigns m->cmd[1 .. n - 1], m->kind[1 .. n - 1], m->target[1 .. n - 1], m->repeat[1 .. n - 1];
     ensures kinds: \forall integer j; 1 <= j < n ==>
             (m->kind[j] == MT_MISSION_KIND_NAV || m->kind[j] == MT_MISSION_KIND_DO ||
              m->kind[j] == MT_MISSION_KIND_JUMP || m->kind[j] == MT_MISSION_KIND_TAG) &&
@@ -145,6 +187,7 @@ static void reset_cursors(mt_mission_t *m, uint16_t n)
     ensures counters: \forall integer j; 1 <= j < n ==> (m->kind[j] == MT_MISSION_KIND_JUMP ==>
                 (m->repeat[j] >= 0 ==> 0 <= m->count[j] <= m->repeat[j]) &&
                 (m->repeat[j] < 0 ==> m->count[j] == 0));
+    ensures copied: MtMissionCopied(m, cmds, n);
 */
 static void put_all(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
 {
@@ -161,39 +204,46 @@ static void put_all(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
         loop invariant counters: \forall integer j; 1 <= j < i ==> (m->kind[j] == MT_MISSION_KIND_JUMP ==>
                 (m->repeat[j] >= 0 ==> 0 <= m->count[j] <= m->repeat[j]) &&
                 (m->repeat[j] < 0 ==> m->count[j] == 0));
+        loop invariant copied: \forall integer j; 1 <= j < i ==> MtMissionSameCmd(&m->cmd[j], &cmds[j]);
         loop assigns i, m->cmd[1 .. n - 1], m->kind[1 .. n - 1], m->target[1 .. n - 1],
-                     m->repeat[1 .. n - 1], m->count[1 .. n - 1];
+                     m->repeat[1 .. n - 1];
         loop variant n - i;
     */
     for (i = 1u; i < n; i++) {
         put_cmd(m, i, &cmds[i], mt_mission_scratch_target[i], n);
     }
+    /*@ assert at_end: i == n; */
 }
 
-/* Make the checked list the active mission. Cannot fail. (Only the parts of
- * the invariant it keeps are required: small contexts keep the goals fast.) */
+/* Make the checked list the active mission over a list of `before`
+ * commands (0: keep no jump counter). Cannot fail. (Only the parts of the
+ * invariant it keeps are required: small contexts keep the goals fast.) */
 /*@ requires \valid(m) && \separated(m, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
                                      mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
     requires m->start_fn != \null && m->verify_fn != \null && m->complete_fn != \null;
     requires MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
     requires \separated(cmds + (0 .. n - 1), m);
+    requires before <= MT_CFG_MISSION_MAX_CMDS;
     assigns m->cmd[0 .. n - 1], m->kind[0 .. n - 1], m->target[0 .. n - 1], m->repeat[0 .. n - 1],
             m->count[0 .. n - 1], m->total, m->generation, m->state, m->do_done, m->nav,
             m->do_cmd, m->nav_idx, m->do_idx, m->prev_nav;
     ensures MtMissionInv(m);
     ensures m->total == n && m->state == MT_MISSION_STOPPED && m->nav_idx == MT_MISSION_NONE;
     ensures m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+    ensures m->do_idx == MT_MISSION_NONE && m->prev_nav == MT_MISSION_NONE && m->do_done == 0;
     ensures m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF;
+    ensures copied: MtMissionCopied(m, cmds, n);
 */
-static void apply(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n)
+static void apply(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t before)
 {
+    keep_counts(m, cmds, n, before);
     copy_cmd(&m->cmd[0], &cmds[0]);
     m->kind[0] = MT_MISSION_KIND_HOME;
     m->target[0] = 0u;
     m->repeat[0] = 0;
     m->count[0] = 0;
     put_all(m, cmds, n);
-    reset_cursors(m, n);
+    reset_cursors(m, n, cmds);
     /*@ assert home: m->kind[0] == MT_MISSION_KIND_HOME; */
     /*@ assert tables: MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m); */
     /*@ assert cursors: MtMissionCursors(m); */
@@ -216,7 +266,7 @@ mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint1
     if (st != MT_OK) {
         return st;
     }
-    apply(m, cmds, n);
+    apply(m, cmds, n, 0u);
     return MT_OK;
 }
 
@@ -346,6 +396,36 @@ mt_status_t mt_mission_restart_current(mt_mission_t *m)
         return MT_E_STATE;
     }
     mt_mission_advance_or_finish(m, m->nav_idx);
+    return MT_OK;
+}
+
+mt_status_t mt_mission_replace(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad)
+{
+    mt_status_t st;
+    uint16_t at;
+
+    if (m->state != MT_MISSION_RUNNING) {
+        *bad = MT_MISSION_NONE;
+        /*@ assert kept: MtMissionActiveUnchanged{Pre, Here}(m); */
+        /*@ assert kinds: MtMissionKinds(m); */
+        /*@ assert jumps: MtMissionJumps(m); */
+        /*@ assert counters: MtMissionCounters(m); */
+        /*@ assert cursors: MtMissionCursors(m); */
+        return MT_E_STATE;
+    }
+    st = mt_mission_check(m, cmds, n, bad);
+    if (st != MT_OK) {
+        return st;
+    }
+    at = m->nav_idx;
+    apply(m, cmds, n, m->total);
+    /*@ assert applied: MtMissionInv(m); */
+    if (at < n) {
+        /* the index exists: start what is there now [restart_current_nav_cmd] */
+        set_state(m, MT_MISSION_RUNNING);
+        mt_mission_advance_or_finish(m, at);
+        /*@ assert continued: MtMissionInv(m); */
+    }
     return MT_OK;
 }
 

@@ -74,7 +74,9 @@
  * - Validation, then apply (seL4 style): mt_mission_load checks the whole
  *   candidate list first; on any problem it returns the status and the
  *   offending index and leaves the active mission untouched. Loading is
- *   refused while the mission runs (stop it first).
+ *   refused while the mission runs; mt_mission_replace swaps a running
+ *   mission (validated the same way) and continues at the same index, or
+ *   stops when that index is gone.
  * - Units: no floating point. Params 1..4 are fixed point with 3 decimals
  *   (MT_MISSION_MILLI); MT_MISSION_PARAM_NAN stands for a NaN param (allowed
  *   only where AP allows it). x/y are latitude/longitude in 1e-7 degrees for
@@ -199,90 +201,7 @@ typedef struct {
 extern uint8_t mt_mission_scratch_safe[MT_CFG_MISSION_MAX_CMDS];
 extern uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
 
-/*@ predicate MtMissionIsJumpId(integer id) = id == MT_MAV_CMD_DO_JUMP || id == MT_MAV_CMD_DO_JUMP_TAG;
-    predicate MtMissionIsCallbackId(integer id) = !MtMissionIsJumpId(id) && id != MT_MAV_CMD_JUMP_TAG;
-
-    predicate MtMissionIdx(mt_mission_t *m, integer i) = 1 <= i < m->total;
-
-    predicate MtMissionCursor(mt_mission_t *m, integer i, integer k) =
-        i == MT_MISSION_NONE || (MtMissionIdx(m, i) && m->kind[i] == k);
-
-    predicate MtMissionKinds(mt_mission_t *m) =
-        m->kind[0] == MT_MISSION_KIND_HOME &&
-        \forall integer i; 1 <= i < m->total ==>
-            (m->kind[i] == MT_MISSION_KIND_NAV || m->kind[i] == MT_MISSION_KIND_DO ||
-             m->kind[i] == MT_MISSION_KIND_JUMP || m->kind[i] == MT_MISSION_KIND_TAG) &&
-            (m->kind[i] == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(m->cmd[i].id)) &&
-            (m->kind[i] == MT_MISSION_KIND_TAG <==> m->cmd[i].id == MT_MAV_CMD_JUMP_TAG);
-
-    predicate MtMissionJumps(mt_mission_t *m) =
-        \forall integer i; 1 <= i < m->total ==> m->kind[i] == MT_MISSION_KIND_JUMP ==>
-            1 <= m->target[i] < m->total && -1 <= m->repeat[i] <= MT_MISSION_REPEAT_MAX;
-
-    predicate MtMissionCounters(mt_mission_t *m) =
-        \forall integer i; 1 <= i < m->total ==> m->kind[i] == MT_MISSION_KIND_JUMP ==>
-            (m->repeat[i] >= 0 ==> 0 <= m->count[i] <= m->repeat[i]) &&
-            (m->repeat[i] < 0 ==> m->count[i] == 0);
-
-    predicate MtMissionDoCursor(mt_mission_t *m, integer i) =
-        i == MT_MISSION_NONE ||
-        (MtMissionIdx(m, i) && (m->kind[i] == MT_MISSION_KIND_DO || m->kind[i] == MT_MISSION_KIND_TAG));
-
-    predicate MtMissionCursors(mt_mission_t *m) =
-        (m->state == MT_MISSION_STOPPED || m->state == MT_MISSION_RUNNING ||
-         m->state == MT_MISSION_COMPLETE) &&
-        MtMissionCursor(m, m->nav_idx, MT_MISSION_KIND_NAV) &&
-        MtMissionCursor(m, m->prev_nav, MT_MISSION_KIND_NAV) &&
-        MtMissionDoCursor(m, m->do_idx) &&
-        (m->nav == MT_MISSION_NONE || m->nav == m->nav_idx) &&
-        (m->do_cmd == MT_MISSION_NONE || m->do_cmd == m->do_idx) &&
-        (m->do_cmd != MT_MISSION_NONE ==> m->nav != MT_MISSION_NONE) &&
-        (m->do_done == 0 || m->do_done == 1) &&
-        (m->state != MT_MISSION_STOPPED ==> m->total >= 2);
-
-    predicate MtMissionInv(mt_mission_t *m) =
-        \valid(m) && 0 <= m->total <= MT_CFG_MISSION_MAX_CMDS &&
-        \separated(m, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
-                   mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1)) &&
-        m->start_fn != \null && m->verify_fn != \null && m->complete_fn != \null &&
-        MtMissionKinds(m) && MtMissionJumps(m) && MtMissionCounters(m) && MtMissionCursors(m);
-
-    predicate MtMissionCmdsIn(mt_mission_cmd_t *c, integer n) =
-        1 <= n <= MT_CFG_MISSION_MAX_CMDS && \valid_read(c + (0 .. n - 1));
-
-    predicate MtMissionRepeatOk(integer p) =
-        p % 1000 == 0 && -1000 <= p <= 32767000;
-
-    predicate MtMissionJumpCmdOk(mt_mission_cmd_t *c, integer n, integer i) =
-        MtMissionIsJumpId(c[i].id) ==> MtMissionRepeatOk(c[i].param[1]);
-
-    predicate MtMissionStaged(uint16_t *tgt, mt_mission_cmd_t *c, integer n) =
-        MtMissionCmdsIn(c, n) &&
-        \forall integer i; 1 <= i < n ==> MtMissionIsJumpId(c[i].id) ==>
-            1 <= tgt[i] < n && MtMissionRepeatOk(c[i].param[1]);
-
-    predicate MtMissionSameCmd(mt_mission_cmd_t *a, mt_mission_cmd_t *b) =
-        a->id == b->id && a->frame == b->frame && a->options == b->options &&
-        a->param[0] == b->param[0] && a->param[1] == b->param[1] &&
-        a->param[2] == b->param[2] && a->param[3] == b->param[3] &&
-        a->x == b->x && a->y == b->y && a->z == b->z;
-
-    predicate MtMissionActiveUnchanged{L1, L2}(mt_mission_t *m) =
-        \at(m->total, L1) == \at(m->total, L2) &&
-        \at(m->generation, L1) == \at(m->generation, L2) &&
-        \at(m->state, L1) == \at(m->state, L2) &&
-        \at(m->nav, L1) == \at(m->nav, L2) && \at(m->do_cmd, L1) == \at(m->do_cmd, L2) &&
-        \at(m->nav_idx, L1) == \at(m->nav_idx, L2) && \at(m->do_idx, L1) == \at(m->do_idx, L2) &&
-        \at(m->do_done, L1) == \at(m->do_done, L2) &&
-        \at(m->prev_nav, L1) == \at(m->prev_nav, L2) &&
-        \at(m->completions, L1) == \at(m->completions, L2) &&
-        \forall integer i; 0 <= i < MT_CFG_MISSION_MAX_CMDS ==>
-            \at(m->kind[i], L1) == \at(m->kind[i], L2) &&
-            \at(m->count[i], L1) == \at(m->count[i], L2) &&
-            \at(m->target[i], L1) == \at(m->target[i], L2) &&
-            \at(m->repeat[i], L1) == \at(m->repeat[i], L2) &&
-            \at(m->cmd[i], L1) == \at(m->cmd[i], L2);
-*/
+#include "mt_spec_mission.h"
 
 /** Classify a command id: MT_MISSION_KIND_NAV / DO / JUMP / TAG; 0 (HOME) when
  *  the id is unknown. [any context, pure] */
@@ -382,11 +301,67 @@ mt_status_t mt_mission_check(const mt_mission_t *m, const mt_mission_cmd_t *cmds
       ensures loaded: \result == MT_OK ==> m->total == n && m->state == MT_MISSION_STOPPED &&
           m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->nav_idx == MT_MISSION_NONE &&
           (m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF);
+      ensures copied: \result == MT_OK ==> MtMissionCopied(m, cmds, n);
       ensures rejected: \result != MT_OK ==> MtMissionActiveUnchanged{Pre, Post}(m);
     complete behaviors;
     disjoint behaviors;
 */
 mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad);
+
+/** Replace the mission while it runs, between two updates (a ground
+ *  station's upload in flight: AP writes the upload into the stored mission,
+ *  then Copter's AUTO calls restart_current_nav_cmd). The candidate list is
+ *  validated whole first (mt_mission_check); on any problem nothing changes.
+ *  Applied, the new list is the active mission (generation + 1); a jump
+ *  counter is kept where both lists have a jump at the same index (AP keys
+ *  its jump tracking by index), at most the new repeat count; every other
+ *  counter is 0. Then, when the index of the last nav command set (nav_idx)
+ *  exists in the new list, the nav advance runs from it as
+ *  mt_mission_restart_current's does: the command now at that index starts
+ *  (a do command there starts and the walk goes on to the next nav command;
+ *  the end completes the mission). Otherwise the mission is STOPPED with no
+ *  command set: the vehicle holds, and mt_mission_start or
+ *  mt_mission_set_current continue it.
+ *  AP differs in two ways: AUTO restarts the command only when its change
+ *  detector sees the current or next nav commands change, and a restart that
+ *  fails (the index beyond the new list) leaves the old command flying from
+ *  RAM, a command that is no longer in the mission.
+ *  @retval MT_OK (RUNNING or COMPLETE: continued; STOPPED: held)
+ *  @retval MT_E_STATE not running (nothing changes; use mt_mission_load)
+ *  @retval any status of mt_mission_check, with *bad the offending index;
+ *          the active mission is untouched. */
+/*@ requires inv: MtMissionInv(m);
+    requires cmds: n < 1 || n > MT_CFG_MISSION_MAX_CMDS || MtMissionCmdsIn(cmds, n);
+    requires sep: \separated(cmds + (0 .. n - 1), m) && \separated(bad, m, cmds + (0 .. n - 1));
+    requires sep_scratch: \separated(bad, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                                      mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1)) &&
+        \separated(cmds + (0 .. n - 1), mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
+                   mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
+    requires bad: \valid(bad);
+    assigns *m, *bad, mt_mission_scratch_safe[0 .. MT_CFG_MISSION_MAX_CMDS - 1],
+            mt_mission_scratch_target[0 .. MT_CFG_MISSION_MAX_CMDS - 1], MtPortNow;
+    ensures inv: MtMissionInv(m);
+    behavior not_running:
+      assumes m->state != MT_MISSION_RUNNING;
+      ensures status: \result == MT_E_STATE && *bad == MT_MISSION_NONE;
+      ensures untouched: MtMissionActiveUnchanged{Pre, Post}(m);
+    behavior running:
+      assumes m->state == MT_MISSION_RUNNING;
+      ensures located: \result == MT_OK <==> *bad == MT_MISSION_NONE;
+      ensures rejected: \result != MT_OK ==> MtMissionActiveUnchanged{Pre, Post}(m);
+      ensures replaced: \result == MT_OK ==> m->total == n && MtMissionCopied(m, cmds, n) &&
+          (m->generation == \old(m->generation) + 1 || \old(m->generation) == 0xFFFFFFFF);
+      ensures continued: \result == MT_OK ==> \old(m->nav_idx) < n ==>
+          (m->state == MT_MISSION_RUNNING || m->state == MT_MISSION_COMPLETE) &&
+          (m->completions == \old(m->completions) + (m->state == MT_MISSION_COMPLETE ? 1 : 0) ||
+           \old(m->completions) == 0xFFFFFFFF);
+      ensures held: \result == MT_OK ==> \old(m->nav_idx) >= n ==>
+          m->state == MT_MISSION_STOPPED && m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE &&
+          m->nav_idx == MT_MISSION_NONE && m->completions == \old(m->completions);
+    complete behaviors;
+    disjoint behaviors;
+*/
+mt_status_t mt_mission_replace(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t n, uint16_t *bad);
 
 /** Start from the first command: counters and cursors reset, RUNNING, and
  *  the nav advance from index 1 (the first do command before the first nav
