@@ -6,7 +6,7 @@
 #      split over several files, such as wq.c, wq_timer.c, ...), the smoke canary, and the WP
 #      gate on those
 #   3. its CBMC harnesses (proofs/cbmc/proofs/<function>/, CHECK_CBMC_<m>: name prefixes)
-#   4. TLC on the CI configurations of its model (tla/models.json "module" = CHECK_TLA_<m>)
+#   4. TLC on the CI configurations of its models (tla/models.json "module" in CHECK_TLA_<m>)
 #   5. its trace validation (tools/trace/run_traces.py --only CHECK_TRACE_<m>)
 # Results go to $(BUILD)/check/<module>/. `make prove` remains the run of record: this target is
 # for working on one module. The table in README.md ("Modules") lists the same mapping.
@@ -43,7 +43,7 @@ CHECK_TLA_proc     := Proc
 CHECK_TLA_sched    := Sched
 CHECK_TLA_bus      := Bus
 CHECK_TLA_wq       := WqMC
-CHECK_TLA_mission  := MissionMC
+CHECK_TLA_mission  := MissionMC MissionSwap
 
 # The ring traces run both rings.
 CHECK_TRACE_ring    := ring
@@ -55,7 +55,7 @@ check_comma := ,
 check_wp = $(filter $(1) $(1)_%,$(WP_MODULES))
 check_harnesses = $(foreach p,$(CHECK_CBMC_$(1)),$(filter $(p)%,$(CBMC_PROOF_NAMES)))
 check_models = python3 -c 'import json; print(" ".join(m["name"] for m in \
-    json.load(open("tla/models.json"))["models"] if m["module"] == "$(1)" and not m["deep"]))'
+    json.load(open("tla/models.json"))["models"] if m["module"] in "$(1)".split() and not m["deep"]))'
 
 .PHONY: $(addprefix check-,$(CHECK_MODULES))
 

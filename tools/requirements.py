@@ -107,10 +107,17 @@ def checked_properties(root):
         defs = module_defs(root, m["module"])
         todo = []
         with open(os.path.join(root, "tla", m["config"]), encoding="utf-8") as f:
+            listing = False  # inside an INVARIANTS/PROPERTIES list (it goes on on indented lines)
             for line in f:
+                line = re.sub(r"\\\*.*", "", line)
                 hit = CFG_LIST_RE.match(line)
                 if hit:
                     todo += re.findall(r"[A-Za-z_]\w*", hit.group(1))
+                    listing = True
+                elif listing and line[:1].isspace() and line.strip():
+                    todo += re.findall(r"[A-Za-z_]\w*", line)
+                else:
+                    listing = False
         seen = set()
         while todo:
             n = todo.pop()

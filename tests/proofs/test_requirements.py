@@ -71,6 +71,19 @@ def test_a_model_property_no_passing_configuration_checks_fails(tmp_path):
         "model Sem.NoSuchProperty: not checked by a passing configuration"]
 
 
+def test_a_property_on_a_continuation_line_is_checked(tmp_path):
+    """An INVARIANTS list goes on on indented lines (tla/cfg/Mission_nested.cfg's second line
+    names LookAheadBounded); a commented-out name is not checked."""
+    root = tmp_path / "root"
+    (root / "tla" / "cfg").mkdir(parents=True)
+    (root / "tla" / "M.tla").write_text("---- MODULE M ----\nA == TRUE\nB == TRUE\nC == TRUE\n====\n")
+    (root / "tla" / "cfg" / "M.cfg").write_text(
+        "CONSTANTS\n    K = 1\nINVARIANTS A\n    B \\* C\n")
+    (root / "tla" / "models.json").write_text(json.dumps(
+        {"models": [{"name": "M", "module": "M", "config": "cfg/M.cfg", "expect": "pass"}]}))
+    assert reqs.checked_properties(str(root)) == {"M.A", "M.B"}
+
+
 def test_tests_and_models_do_not_replace_a_clause(tmp_path):
     res = run(tmp_path, dict(GOOD, clauses=[]), PROVED)
     assert res["problems"] == ["no contract clause"]
