@@ -776,8 +776,10 @@ def t_mavlink_mission_upload(S):
 def t_mavlink_mission_protocol(S):
     """The vehicle drives an upload as ArduPilot does: it asks again for an item after 1 s and
     cancels after 8 s without one; an item out of sequence gets INVALID_SEQUENCE and the upload
-    goes on; fences are not supported; a running mission is not replaced (DENIED) nor cleared
-    (ERROR), and keeps flying."""
+    goes on; fences are not supported; a running mission is not cleared (ERROR). A valid upload
+    in flight replaces the mission (mt_mission_replace): the vehicle starts the new mission's
+    item at the same index again and flies the new mission; when that index is gone it holds
+    (LOITER) and says so."""
     g, sess = mavlink_session(S, ["--speedup", "10"])
     mav = g.mav
     plain = g.wpl_items(os.path.join(MISSIONS, "plain.waypoints"))
@@ -801,16 +803,34 @@ def t_mavlink_mission_protocol(S):
         s.conn.mav.mission_count_send(1, 1, 2, mav.MAV_MISSION_TYPE_FENCE)
         check(s.wait("MISSION_ACK").type == mav.MAV_MISSION_UNSUPPORTED, "fence")
         s.wait("STATUSTEXT", lambda m: m.text.startswith("mission: #2 WAYPOINT started"), seconds=60)
-        ack, asked = s.upload(g.wpl_items(os.path.join(MISSIONS, "hop.waypoints")))
-        check(ack.type == mav.MAV_MISSION_DENIED, "upload during the mission: %s" % ack)
-        s.wait("STATUSTEXT", lambda m: m.text.startswith("mission upload refused: the mission is running"))
         s.conn.mav.mission_clear_all_send(1, 1, mav.MAV_MISSION_TYPE_MISSION)
         check(s.wait("MISSION_ACK").type == mav.MAV_MISSION_ERROR, "clear during the mission")
-        same_items(s.download(), plain)
-        s.wait("STATUSTEXT", lambda m: m.text == "mission: complete", seconds=60)
+        # in flight at #2: the same mission with #2 and #3 moved and one more waypoint
+        moved = [dict(w) for w in plain]
+        moved[2]["x"] += 900
+        moved[3]["y"] += 900
+        moved.insert(6, dict(moved[5], y=moved[5]["y"] + 900))
+        for k, w in enumerate(moved):
+            w["seq"] = k
+        t0 = s.mark()
+        ack, asked = s.upload(moved)
+        check(ack.type == mav.MAV_MISSION_ACCEPTED, "upload in flight: %s" % ack)
+        s.wait_text(lambda t: t.text == "mission replaced in flight (8 items): continuing at #2", since=t0)
+        s.wait_text(lambda t: t.text.startswith("mission: #2 WAYPOINT started"), since=t0)
+        same_items(s.download(), moved)
+        # at #4, a shorter one without it: the vehicle holds in LOITER and says so
+        s.wait("STATUSTEXT", lambda m: m.text.startswith("mission: #4 WAYPOINT started"), seconds=60)
+        t1 = s.mark()
+        ack, asked = s.upload(plain[:4])
+        check(ack.type == mav.MAV_MISSION_ACCEPTED, "shorter upload in flight: %s" % ack)
+        s.wait_text(lambda t: t.text == "mission replaced in flight (4 items): #4 is gone, holding", since=t1)
+        heartbeat_mode(s, mav, mav.COPTER_MODE_LOITER)
+        same_items(s.download(), plain[:4])
+        check(s.command(mav.MAV_CMD_NAV_LAND).result == mav.MAV_RESULT_ACCEPTED, "land after the hold")
+        s.wait_text(lambda t: t.text.startswith("vehicle: landed"), seconds=60, since=t1)
         s.stop()
-    check([e for e in S_events(s.out) if re.match(r"mission: #\d+ \w+ started", e)][-1].startswith("mission: #6 LAND"),
-          "the first mission flew to its end")
+    started = [e for e in S_events(s.out) if re.match(r"mission: #\d+ \w+ started", e)]
+    check([e.split()[1] for e in started] == ["#1", "#2", "#2", "#3", "#4"], "items started: %s" % started)
 
 
 def heartbeat_mode(s, mav, custom, seconds=30):
@@ -1115,7 +1135,7 @@ TESTS = [
     ("mavlink: no mission, garbage on the link, a second ground station", t_mavlink_no_mission),
     ("mavlink: the same session in the ASan+UBSan build", t_mavlink_sanitizers),
     ("mavlink: mission upload, download, rejections, clear, set current", t_mavlink_mission_upload),
-    ("mavlink: mission protocol timing, sequence, a running mission kept", t_mavlink_mission_protocol),
+    ("mavlink: mission protocol timing, sequence, replaced in flight", t_mavlink_mission_protocol),
     ("mavlink: commands (arm, modes, mission start, current, RTL, land)", t_mavlink_commands),
     ("mavlink: link loss (RTL, LAND, continue)", t_mavlink_link_loss),
     ("mavlink: items reached in the order mt-mission predicts (jumps)", t_mavlink_reached_order),

@@ -19,11 +19,14 @@
  * Unlike ArduPilot, which writes each item into the mission as it arrives, an
  * upload is staged, converted item by item with the mission file library's
  * rules (mt_item_to_cmd: the same as a .waypoints or .plan file), validated whole
- * by the kernel (mt_mission_check), and only then applied (mt_mission_load); a
+ * by the kernel (mt_mission_check), and only then applied (mt_mission_load, or mt_mission_replace); a
  * rejected upload gets the matching MAV_MISSION_RESULT, a STATUSTEXT with the
  * item index and the reason, and the mission on board stays as it was. A
- * running mission is not replaced (DENIED, said): the swap between two
- * sequencer updates needs a kernel operation that does not exist yet.
+ * valid upload while the mission runs replaces it in flight, as ArduPilot
+ * allows (mt_mission_replace, between two sequencer updates): the vehicle
+ * goes on at the same item (started again, as ArduPilot's AUTO restarts the
+ * current command when the mission changed) when the new mission has that
+ * index, and otherwise holds position (LOITER) and says so.
  */
 #include <math.h>
 #include <string.h>
@@ -157,6 +160,32 @@ static uint8_t result_of_mission(mt_status_t st, const mt_mission_cmd_t *c)
     }
 }
 
+/* A valid upload while the mission runs: swapped in between two sequencer
+ * updates (this task and the sequencer's run on one thread). The vehicle goes
+ * on at the same item when the new mission has it, and holds position
+ * (LOITER) and says so when it does not. */
+static void replace_running(veh_t *v, uint16_t n)
+{
+    uint16_t bad = MT_MISSION_NONE;
+    uint16_t at = v->mission.nav_idx;
+    mt_status_t st = mt_mission_replace(&v->mission, g_ml.cmds, n, &bad);
+
+    if (st != MT_OK) { /* checked just before: not expected */
+        veh_say("mission upload refused: %s", mt_status_str(st));
+        send_ack(v, g_ml.peer_sys, g_ml.peer_comp, (uint8_t)MAV_MISSION_ERROR);
+        return;
+    }
+    v->mission_ok = n >= 2u;
+    v->mission_st = v->mission_ok ? MT_OK : MT_E_EMPTY;
+    if (v->mission.state == MT_MISSION_STOPPED) {
+        veh_set_mode(v, VEH_MODE_HOLD);
+        veh_say("mission replaced in flight (%u items): #%u is gone, holding", (unsigned)n, (unsigned)at);
+    } else {
+        veh_say("mission replaced in flight (%u items): continuing at #%u", (unsigned)n, (unsigned)at);
+    }
+    send_ack(v, g_ml.peer_sys, g_ml.peer_comp, (uint8_t)MAV_MISSION_ACCEPTED);
+}
+
 /* All items are in: validate the whole mission, then apply it (or say why not). */
 static void upload_complete(veh_t *v)
 {
@@ -171,11 +200,14 @@ static void upload_complete(veh_t *v)
         send_ack(v, g_ml.peer_sys, g_ml.peer_comp, result_of_mission(st, c));
         return;
     }
+    if (v->mission.state == MT_MISSION_RUNNING) {
+        replace_running(v, n);
+        return;
+    }
     st = mt_mission_load(&v->mission, g_ml.cmds, n, &bad);
     if (st != MT_OK) {
-        /* valid, but the mission is running: the in-flight swap is not there yet */
-        veh_say("mission upload refused: the mission is running (%s)", mt_status_str(st));
-        send_ack(v, g_ml.peer_sys, g_ml.peer_comp, (uint8_t)MAV_MISSION_DENIED);
+        veh_say("mission upload refused: %s", mt_status_str(st));
+        send_ack(v, g_ml.peer_sys, g_ml.peer_comp, (uint8_t)MAV_MISSION_ERROR);
         return;
     }
     v->mission_ok = n >= 2u;
