@@ -121,7 +121,11 @@ static void keep_counts(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint16_t 
         if ((i < before) && (m->kind[i] == MT_MISSION_KIND_JUMP) && (m->count[i] > 0) &&
             (mt_mission_kind_of(cmds[i].id) == MT_MISSION_KIND_JUMP) && (cmds[i].param[1] >= 0)) {
             int32_t r = cmds[i].param[1] / MT_MISSION_MILLI;
-            c = ((int32_t)m->count[i] < r) ? m->count[i] : (int16_t)r;
+            if ((int32_t)m->count[i] < r) {
+                c = m->count[i];
+            } else {
+                c = (int16_t)r;
+            }
         }
         m->count[i] = c;
     }

@@ -179,9 +179,11 @@ static void replace_running(veh_t *v, uint16_t n)
     v->mission_st = v->mission_ok ? MT_OK : MT_E_EMPTY;
     if (v->mission.state == MT_MISSION_STOPPED) {
         veh_set_mode(v, VEH_MODE_HOLD);
-        veh_say("mission replaced in flight (%u items): #%u is gone, holding", (unsigned)n, (unsigned)at);
+        veh_say("mission replaced in flight (%u items): #%u is gone, holding", (unsigned)n,
+                (unsigned)at);
     } else {
-        veh_say("mission replaced in flight (%u items): continuing at #%u", (unsigned)n, (unsigned)at);
+        veh_say("mission replaced in flight (%u items): continuing at #%u", (unsigned)n,
+                (unsigned)at);
     }
     send_ack(v, g_ml.peer_sys, g_ml.peer_comp, (uint8_t)MAV_MISSION_ACCEPTED);
 }

@@ -201,6 +201,8 @@ typedef struct {
 extern uint8_t mt_mission_scratch_safe[MT_CFG_MISSION_MAX_CMDS];
 extern uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
 
+/* The sequencer's ACSL logic and predicates (empty to a C compiler), after the types they read. */
+// cppcheck-suppress misra-c2012-20.1 ; D-107 ACSL only, included after the types it names
 #include "mt_spec_mission.h"
 
 /** Classify a command id: MT_MISSION_KIND_NAV / DO / JUMP / TAG; 0 (HOME) when

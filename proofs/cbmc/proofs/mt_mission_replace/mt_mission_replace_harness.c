@@ -35,6 +35,7 @@ void harness(void)
     /* held: the index is gone */
     MTC_REACH(res == MT_OK && m->state == MT_MISSION_STOPPED && n >= 2u);
     /* a jump counter kept (both lists have a jump at 2, clamped to the new repeat count) */
-    MTC_REACH(res == MT_OK && m->state == MT_MISSION_STOPPED && m->kind[2] == MT_MISSION_KIND_JUMP &&
-              m->count[2] > 0 && m->count[2] == m->repeat[2] && MTC_OLDV(m->count[2]) > m->repeat[2]);
+    MTC_REACH(res == MT_OK && m->state == MT_MISSION_STOPPED &&
+              m->kind[2] == MT_MISSION_KIND_JUMP && m->count[2] > 0 &&
+              m->count[2] == m->repeat[2] && MTC_OLDV(m->count[2]) > m->repeat[2]);
 }
