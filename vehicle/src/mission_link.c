@@ -160,40 +160,21 @@ static uint8_t result_of_mission(mt_status_t st, const mt_mission_cmd_t *c)
     }
 }
 
-/* A valid upload while the mission runs: swapped in between two sequencer
- * updates (this task and the sequencer's run on one thread). The vehicle goes
- * on at the same item when the new mission has it, and holds position
- * (LOITER) and says so when it does not. */
-static void replace_running(veh_t *v, uint16_t n)
-{
-    uint16_t bad = MT_MISSION_NONE;
-    uint16_t at = v->mission.nav_idx;
-    mt_status_t st = mt_mission_replace(&v->mission, g_ml.cmds, n, &bad);
-
-    if (st != MT_OK) { /* checked just before: not expected */
-        veh_say("mission upload refused: %s", mt_status_str(st));
-        send_ack(v, g_ml.peer_sys, g_ml.peer_comp, (uint8_t)MAV_MISSION_ERROR);
-        return;
-    }
-    v->mission_ok = n >= 2u;
-    v->mission_st = v->mission_ok ? MT_OK : MT_E_EMPTY;
-    if (v->mission.state == MT_MISSION_STOPPED) {
-        veh_set_mode(v, VEH_MODE_HOLD);
-        veh_say("mission replaced in flight (%u items): #%u is gone, holding", (unsigned)n,
-                (unsigned)at);
-    } else {
-        veh_say("mission replaced in flight (%u items): continuing at #%u", (unsigned)n,
-                (unsigned)at);
-    }
-    send_ack(v, g_ml.peer_sys, g_ml.peer_comp, (uint8_t)MAV_MISSION_ACCEPTED);
-}
-
-/* All items are in: validate the whole mission, then apply it (or say why not). */
+/* All items are in: validated whole and applied by one kernel call (or said
+ * why not). A mission that runs is replaced in flight (mt_mission_replace,
+ * between two sequencer updates: this task and the sequencer's run on one
+ * thread): the vehicle goes on at the same item when the new mission has it,
+ * and holds position (LOITER) and says so when it does not. Otherwise it is
+ * loaded (mt_mission_load). Either call checks the whole list first and
+ * changes nothing when it is refused. */
 static void upload_complete(veh_t *v)
 {
     uint16_t bad = MT_MISSION_NONE;
     uint16_t n = g_ml.count;
-    mt_status_t st = mt_mission_check(&v->mission, g_ml.cmds, n, &bad);
+    bool running = v->mission.state == MT_MISSION_RUNNING;
+    uint16_t at = v->mission.nav_idx;
+    mt_status_t st = running ? mt_mission_replace(&v->mission, g_ml.cmds, n, &bad)
+                             : mt_mission_load(&v->mission, g_ml.cmds, n, &bad);
 
     upload_end();
     if (st != MT_OK) {
@@ -202,19 +183,18 @@ static void upload_complete(veh_t *v)
         send_ack(v, g_ml.peer_sys, g_ml.peer_comp, result_of_mission(st, c));
         return;
     }
-    if (v->mission.state == MT_MISSION_RUNNING) {
-        replace_running(v, n);
-        return;
-    }
-    st = mt_mission_load(&v->mission, g_ml.cmds, n, &bad);
-    if (st != MT_OK) {
-        veh_say("mission upload refused: %s", mt_status_str(st));
-        send_ack(v, g_ml.peer_sys, g_ml.peer_comp, (uint8_t)MAV_MISSION_ERROR);
-        return;
-    }
     v->mission_ok = n >= 2u;
     v->mission_st = v->mission_ok ? MT_OK : MT_E_EMPTY;
-    veh_say("mission: %u items uploaded", (unsigned)n);
+    if (!running) {
+        veh_say("mission: %u items uploaded", (unsigned)n);
+    } else if (v->mission.state == MT_MISSION_STOPPED) {
+        veh_set_mode(v, VEH_MODE_HOLD);
+        veh_say("mission replaced in flight (%u items): #%u is gone, holding", (unsigned)n,
+                (unsigned)at);
+    } else {
+        veh_say("mission replaced in flight (%u items): continuing at #%u", (unsigned)n,
+                (unsigned)at);
+    }
     send_ack(v, g_ml.peer_sys, g_ml.peer_comp, (uint8_t)MAV_MISSION_ACCEPTED);
 }
 
