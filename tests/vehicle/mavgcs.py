@@ -198,11 +198,11 @@ class Session:
                                                         it["z"], mav.MAV_MISSION_TYPE_MISSION)
         raise Timeout("upload: no MISSION_ACK in %d s" % seconds)
 
-    def command(self, cmd, p1=0.0, p2=0.0, seconds=10):
+    def command(self, cmd, p1=0.0, p2=0.0, seconds=10, p7=0.0):
         """COMMAND_LONG to the vehicle; its COMMAND_ACK. self.sent_at marks the messages from
         the moment it was sent (what the command caused may arrive before its ACK)."""
         self.sent_at = self.mark()
-        self.conn.mav.command_long_send(1, 1, cmd, 0, p1, p2, 0, 0, 0, 0, 0)
+        self.conn.mav.command_long_send(1, 1, cmd, 0, p1, p2, 0, 0, 0, 0, p7)
         return self.wait("COMMAND_ACK", lambda m: m.command == cmd, seconds=seconds, since=self.sent_at)
 
     def arm_and_auto(self, seconds=30):

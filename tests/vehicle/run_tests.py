@@ -560,12 +560,14 @@ def t_mavlink_flight(S):
               "identity: %s" % hb)
         check(hb.get_srcComponent() == mav.MAV_COMP_ID_AUTOPILOT1, "component id %d" % hb.get_srcComponent())
         s.conn.mav.param_request_list_send(1, 1)
-        plist = [s.wait("PARAM_VALUE") for _ in range(4)]
+        plist = [s.wait("PARAM_VALUE") for _ in range(5)]
         check([(p.param_id, p.param_index, p.param_count, p.param_value) for p in plist] ==
-              [("SYSID_THISMAV", 0, 4, 1.0), ("WPNAV_SPEED", 1, 4, 500.0), ("FS_GCS_ENABLE", 2, 4, 1.0),
-               ("FS_GCS_TIMEOUT", 3, 4, 5.0)], "parameter list %s" % [str(p) for p in plist])
+              [("SYSID_THISMAV", 0, 5, 1.0), ("WPNAV_SPEED", 1, 5, 500.0), ("FS_GCS_ENABLE", 2, 5, 1.0),
+               ("FS_GCS_TIMEOUT", 3, 5, 5.0), ("PILOT_TKOFF_ALT", 4, 5, 0.0)],
+              "parameter list %s" % [str(p) for p in plist])
         check([p.param_type for p in plist] == [mav.MAV_PARAM_TYPE_INT16, mav.MAV_PARAM_TYPE_REAL32,
-                                                mav.MAV_PARAM_TYPE_INT8, mav.MAV_PARAM_TYPE_REAL32],
+                                                mav.MAV_PARAM_TYPE_INT8, mav.MAV_PARAM_TYPE_REAL32,
+                                                mav.MAV_PARAM_TYPE_REAL32],
               "parameter types")
         s.conn.mav.param_set_send(1, 1, b"WPNAV_SPEED", 900.0, mav.MAV_PARAM_TYPE_REAL32)
         check(s.wait("PARAM_VALUE").param_value == 900.0, "WPNAV_SPEED set")
@@ -897,6 +899,90 @@ def t_mavlink_commands(S):
     check(counts[-1] == 1, "one command counted unsupported: %s" % (counts,))
 
 
+def param_value(s, name, value=None, mav=None):
+    """PARAM_SET (value given) or PARAM_REQUEST_READ of name; the PARAM_VALUE answering it."""
+    mark = s.mark()
+    if value is None:
+        s.conn.mav.param_request_read_send(1, 1, name.encode(), -1)
+    else:
+        s.conn.mav.param_set_send(1, 1, name.encode(), value, mav.MAV_PARAM_TYPE_REAL32)
+    return s.wait("PARAM_VALUE", lambda m: m.param_id == name, since=mark)
+
+
+def t_mavlink_guided_takeoff(S):
+    """QGroundControl's Takeoff and Start Mission actions, step by step as its ArduPilot plugin
+    sends them: PILOT_TKOFF_ALT read as the least takeoff altitude, GUIDED, arm, NAV_TAKEOFF to
+    max(PILOT_TKOFF_ALT, the slider's 5 m); the vehicle climbs there and holds; ArduCopter's
+    refusals (disarmed, not GUIDED/LOITER, not above the vehicle, already flying, a COMMAND_INT
+    in another frame); LAND; then an uploaded mission started with GUIDED, arm, MISSION_START."""
+    g, sess = mavlink_session(S, ["--speedup", "10"])
+    mav = g.mav
+    with sess as s:
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        check(param_value(s, "PILOT_TKOFF_ALT").param_value == 0.0, "PILOT_TKOFF_ALT default 0")
+        check(param_value(s, "PILOT_TKOFF_ALT", 1500.0, mav).param_value == 0.0, "1500 cm refused")
+        check(param_value(s, "PILOT_TKOFF_ALT", 800.0, mav).param_value == 800.0, "800 cm set")
+        a = s.command(mav.MAV_CMD_NAV_TAKEOFF, p7=8.0)
+        check(a.result == mav.MAV_RESULT_FAILED, "takeoff disarmed: %s" % a)
+        s.wait_text(lambda m: m.text == "gcs: takeoff refused: arm first", since=s.sent_at)
+        a, _ = s.arm_and_auto()  # AUTO is refused: no mission
+        check(a.result == mav.MAV_RESULT_ACCEPTED, "arm in STABILIZE")
+        a = s.command(mav.MAV_CMD_NAV_TAKEOFF, p7=8.0)
+        check(a.result == mav.MAV_RESULT_FAILED, "takeoff in STABILIZE: %s" % a)
+        s.wait_text(lambda m: m.text == "gcs: takeoff refused: only in GUIDED or LOITER", since=s.sent_at)
+        check(s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 0.0).result == mav.MAV_RESULT_ACCEPTED, "disarm")
+        # QGroundControl: takeoff altitude = max(PILOT_TKOFF_ALT / 100, the slider)
+        alt = max(param_value(s, "PILOT_TKOFF_ALT").param_value / 100.0, 5.0)
+        check(s.command(mav.MAV_CMD_DO_SET_MODE, 1.0, float(mav.COPTER_MODE_GUIDED)).result ==
+              mav.MAV_RESULT_ACCEPTED, "GUIDED on the ground, disarmed")
+        hb = heartbeat_mode(s, mav, mav.COPTER_MODE_GUIDED)
+        check(hb.base_mode & mav.MAV_MODE_FLAG_GUIDED_ENABLED and not hb.base_mode & mav.MAV_MODE_FLAG_AUTO_ENABLED,
+              "GUIDED flags: %s" % hb)
+        check(s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0).result == mav.MAV_RESULT_ACCEPTED, "arm in GUIDED")
+        heartbeat_mode(s, mav, mav.COPTER_MODE_GUIDED)
+        mark = s.mark()
+        s.conn.mav.command_int_send(1, 1, mav.MAV_FRAME_GLOBAL, mav.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, 0, 0, 0, 0, 0,
+                                    alt)
+        a = s.wait("COMMAND_ACK", lambda m: m.command == mav.MAV_CMD_NAV_TAKEOFF, since=mark)
+        check(a.result == mav.MAV_RESULT_DENIED, "COMMAND_INT takeoff in MAV_FRAME_GLOBAL: %s" % a)
+        a = s.command(mav.MAV_CMD_NAV_TAKEOFF, p7=0.0)
+        check(a.result == mav.MAV_RESULT_FAILED, "takeoff to 0 m: %s" % a)
+        s.wait_text(lambda m: m.text == "gcs: takeoff refused: the altitude is not above the vehicle",
+                    since=s.sent_at)
+        start = s.wait("GLOBAL_POSITION_INT")
+        a = s.command(mav.MAV_CMD_NAV_TAKEOFF, p7=alt)
+        check(a.result == mav.MAV_RESULT_ACCEPTED, "takeoff to %.1f m: %s" % (alt, a))
+        s.wait_text(lambda m: m.text == "gcs: takeoff to 8.0 m", since=s.sent_at)
+        s.wait_text(lambda m: m.text.startswith("vehicle: takeoff complete at "), seconds=30, since=s.sent_at)
+        # it holds there: 3 s (vehicle time) of positions within 0.7 m of the target, right above
+        held = s.mark()
+        t0 = s.wait("GLOBAL_POSITION_INT").time_boot_ms
+        s.wait("GLOBAL_POSITION_INT", lambda m: m.time_boot_ms > t0 + 3000, seconds=10)
+        pos = [m for _, m in s.msgs[held:] if m.get_type() == "GLOBAL_POSITION_INT"]
+        check(len(pos) >= 10, "positions while holding: %d" % len(pos))
+        for m in pos:
+            check(abs(m.relative_alt / 1000.0 - alt) < 0.7, "holds %.1f m: %.2f m" % (alt, m.relative_alt / 1000.0))
+            # within 1 m: 1e-7 degree is 1.1 cm of latitude, 0.77 cm of longitude at 46.5 N
+            check(abs(m.lat - start.lat) < 90 and abs(m.lon - start.lon) < 130, "above the takeoff point %s: %s" % (start, m))
+        heartbeat_mode(s, mav, mav.COPTER_MODE_GUIDED)
+        a = s.command(mav.MAV_CMD_NAV_TAKEOFF, p7=20.0)
+        check(a.result == mav.MAV_RESULT_FAILED, "takeoff again: %s" % a)
+        s.wait_text(lambda m: m.text == "gcs: takeoff refused: already flying", since=s.sent_at)
+        check(s.command(mav.MAV_CMD_NAV_LAND).result == mav.MAV_RESULT_ACCEPTED, "LAND")
+        s.wait_text(lambda m: m.text.startswith("vehicle: landed at"), seconds=60, since=s.sent_at)
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1 and not (m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED))
+        # QGroundControl's Start Mission on the ground: GUIDED, arm, MISSION_START
+        ack, _ = s.upload(g.wpl_items(os.path.join(MISSIONS, "plain.waypoints")))
+        check(ack.type == mav.MAV_MISSION_ACCEPTED, "upload: %s" % ack)
+        check(s.command(mav.MAV_CMD_DO_SET_MODE, 1.0, float(mav.COPTER_MODE_GUIDED)).result ==
+              mav.MAV_RESULT_ACCEPTED, "GUIDED again")
+        check(s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0).result == mav.MAV_RESULT_ACCEPTED, "arm again")
+        check(s.command(mav.MAV_CMD_MISSION_START).result == mav.MAV_RESULT_ACCEPTED, "MISSION_START")
+        heartbeat_mode(s, mav, mav.COPTER_MODE_AUTO)
+        s.wait_text(lambda m: m.text.startswith("mission: #2 WAYPOINT started"), seconds=60, since=s.sent_at)
+        s.stop()
+
+
 def t_mavlink_link_loss(S):
     """A ground station that goes silent for FS_GCS_TIMEOUT (vehicle time) while the vehicle
     flies: RTL by default (home, landed), LAND with FS_GCS_ENABLE 5 (where it is), the mission
@@ -1062,7 +1148,7 @@ def t_mavproxy_flight(S):
     """A real ground station, MAVProxy (pinned, from PyPI), driven as a user would type:
     `wp load` of a QGC WPL file, `arm throttle` (again while the pre-arm checks refuse),
     `mode auto`; the vehicle flies the file's mission to its end at 4x, and MAVProxy shows its
-    messages."""
+    messages; then `mode guided`, `arm throttle`, `takeoff 8`, `mode land`."""
     port = free_udp_port()
     work = tempfile.mkdtemp(prefix="mavproxy-", dir=S.tmp)
     mp = MAVProxy(port, work)
@@ -1086,6 +1172,17 @@ def t_mavproxy_flight(S):
         mp.send("mode auto")
         mp.expect([r"AP: mission: #1 TAKEOFF started"], 30)
         mp.expect([r"AP: mission: complete"], 120)
+        mp.expect([r"^DISARMED"], 30)
+        # then a takeoff as a MAVProxy user types it, and a landing
+        mp.send("mode guided")
+        mp.expect([r"Mode GUIDED"], 30)
+        mp.send("arm throttle")
+        mp.expect([r"^ARMED"], 30)
+        mp.send("takeoff 8")
+        mp.expect([r"NAV_TAKEOFF: ACCEPTED"], 30)
+        mp.expect([r"AP: vehicle: takeoff complete at"], 60)
+        mp.send("mode land")
+        mp.expect([r"AP: vehicle: landed at"], 60)
         mp.expect([r"^DISARMED"], 30)
     finally:
         mp.close()
@@ -1137,10 +1234,11 @@ TESTS = [
     ("mavlink: mission upload, download, rejections, clear, set current", t_mavlink_mission_upload),
     ("mavlink: mission protocol timing, sequence, replaced in flight", t_mavlink_mission_protocol),
     ("mavlink: commands (arm, modes, mission start, current, RTL, land)", t_mavlink_commands),
+    ("mavlink: GUIDED takeoff and start as QGroundControl sends them", t_mavlink_guided_takeoff),
     ("mavlink: link loss (RTL, LAND, continue)", t_mavlink_link_loss),
     ("mavlink: items reached in the order mt-mission predicts (jumps)", t_mavlink_reached_order),
     ("mavlink: signing (unsigned command dropped, signed accepted)", t_mavlink_signing),
-    ("mavproxy: wp load, arm throttle, mode auto: the mission flown", t_mavproxy_flight),
+    ("mavproxy: wp load, arm throttle, mode auto: the mission flown; takeoff", t_mavproxy_flight),
 ]
 
 

@@ -4,7 +4,7 @@
  * @brief gcs_update (400 Hz): the deployment's ground-station events (arm and
  *        fly AUTO, stop, resume, land) with the pre-arm checks, then the MAVLink
  *        link's receive side and the command it decoded (arm/disarm, modes,
- *        mission start, RTL, land, set current), and the link-loss watch;
+ *        mission start, RTL, land, set current, takeoff), and the link-loss watch;
  *        telemetry_send (10 Hz): the link's telemetry streams (link.c).
  *        The estimate (and the sensors' health in it) comes from the
  *        `estimate` topic; arming and modes go through posctl.c.
@@ -153,6 +153,18 @@ static veh_cmd_result_t cmd_mode(veh_t *v, veh_mode_t m)
     if (m == VEH_MODE_AUTO) {
         return cmd_auto(v, false);
     }
+    if (m == VEH_MODE_GUIDED) {
+        /* as ArduCopter: also on the ground, disarmed (a ground station's takeoff sets GUIDED,
+         * then arms, then sends NAV_TAKEOFF); it needs a position */
+        veh_estimate_msg_t est;
+        veh_latest(&v->gcs.est_sub, &est, (uint32_t)sizeof(est));
+        if (!est.pos_ok) {
+            return refuse("GUIDED", "no position estimate");
+        }
+        leave_auto(v);
+        veh_set_mode(v, m);
+        return VEH_CMD_DONE;
+    }
     if (!s->armed) {
         return refuse(veh_mode_name(m), "arm first");
     }
@@ -161,6 +173,31 @@ static veh_cmd_result_t cmd_mode(veh_t *v, veh_mode_t m)
     }
     leave_auto(v);
     veh_set_mode(v, m);
+    return VEH_CMD_DONE;
+}
+
+/* NAV_TAKEOFF, as ArduCopter's user takeoff: armed, on the ground, in a mode that holds a
+ * position (GUIDED, LOITER), to an altitude above the vehicle's (param7, m above home). */
+static veh_cmd_result_t cmd_takeoff(veh_t *v, const veh_command_t *c)
+{
+    const veh_flight_t *s = &v->fl;
+    veh_estimate_msg_t est;
+
+    if (!s->armed) {
+        return refuse("takeoff", "arm first");
+    }
+    if (s->flying) {
+        return refuse("takeoff", "already flying");
+    }
+    if ((s->mode != VEH_MODE_GUIDED) && (s->mode != VEH_MODE_HOLD)) {
+        return refuse("takeoff", "only in GUIDED or LOITER");
+    }
+    veh_latest(&v->gcs.est_sub, &est, (uint32_t)sizeof(est));
+    if (!isfinite(c->alt) || (c->alt <= -est.pos[2])) {
+        return refuse("takeoff", "the altitude is not above the vehicle");
+    }
+    veh_user_takeoff(v, c->alt);
+    veh_say("gcs: takeoff to %s m", vp_float((char[16]){0}, 16u, c->alt, 1u));
     return VEH_CMD_DONE;
 }
 
@@ -174,6 +211,7 @@ static veh_cmd_result_t command_run(veh_t *v, const veh_command_t *c)
     case VEH_CMD_MISSION_START: return cmd_auto(v, true);
     case VEH_CMD_RTL: return cmd_mode(v, VEH_MODE_RTL);
     case VEH_CMD_LAND: return cmd_mode(v, VEH_MODE_LAND);
+    case VEH_CMD_TAKEOFF: return cmd_takeoff(v, c);
     case VEH_CMD_SET_CURRENT:
     default:
         if (!isfinite(c->p[0]) || (c->p[0] < 0.0f) || (c->p[0] > 65535.0f)) {

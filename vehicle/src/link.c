@@ -20,7 +20,7 @@
  * quadrotor (MAV_TYPE_QUADROTOR) with an ArduPilot-style autopilot
  * (MAV_AUTOPILOT_ARDUPILOTMEGA), so ground stations name the modes with
  * ArduCopter's custom-mode numbers: STANDBY -> STABILIZE (0), AUTO -> AUTO (3),
- * HOLD -> LOITER (5), LAND -> LAND (9), RTL -> RTL (6).
+ * GUIDED -> GUIDED (4), HOLD -> LOITER (5), LAND -> LAND (9), RTL -> RTL (6).
  */
 #include <string.h>
 
@@ -67,6 +67,7 @@ static const veh_param_def_t k_params[VEH_NPARAMS] = {
     {"WPNAV_SPEED", MAV_PARAM_TYPE_REAL32, 50.0f, 1500.0f},
     {"FS_GCS_ENABLE", MAV_PARAM_TYPE_INT8, 0.0f, 5.0f},
     {"FS_GCS_TIMEOUT", MAV_PARAM_TYPE_REAL32, 2.0f, 120.0f},
+    {"PILOT_TKOFF_ALT", MAV_PARAM_TYPE_REAL32, 0.0f, 1000.0f},
 };
 
 static float param_get(const veh_t *v, uint32_t i)
@@ -75,6 +76,7 @@ static float param_get(const veh_t *v, uint32_t i)
     case VEH_PARAM_SYSID: return (float)v->par.sysid;
     case VEH_PARAM_WPNAV_SPEED: return v->par.wpnav_speed_cms;
     case VEH_PARAM_FS_GCS_ENABLE: return (float)v->par.fs_gcs_enable;
+    case VEH_PARAM_PILOT_TKOFF_ALT: return v->par.pilot_tkoff_alt_cm;
     case VEH_PARAM_FS_GCS_TIMEOUT:
     default: return v->par.fs_gcs_timeout_s;
     }
@@ -99,6 +101,7 @@ static void param_set(veh_t *v, uint32_t i, float x)
     case VEH_PARAM_SYSID: v->par.sysid = (uint8_t)x; break;
     case VEH_PARAM_WPNAV_SPEED: v->par.wpnav_speed_cms = x; break;
     case VEH_PARAM_FS_GCS_ENABLE: v->par.fs_gcs_enable = (uint8_t)x; break;
+    case VEH_PARAM_PILOT_TKOFF_ALT: v->par.pilot_tkoff_alt_cm = x; break;
     case VEH_PARAM_FS_GCS_TIMEOUT:
     default: v->par.fs_gcs_timeout_s = x; break;
     }
@@ -126,6 +129,7 @@ void veh_params_default(veh_params_t *p)
     p->wpnav_speed_cms = 500.0f;
     p->fs_gcs_enable = (uint8_t)VEH_FS_GCS_RTL;
     p->fs_gcs_timeout_s = 5.0f;
+    p->pilot_tkoff_alt_cm = 0.0f; /* ArduCopter's default */
     (void)memset(p->gen, 0, sizeof(p->gen));
 }
 
@@ -135,6 +139,7 @@ static uint32_t custom_mode(veh_mode_t m)
 {
     switch (m) {
     case VEH_MODE_AUTO: return (uint32_t)COPTER_MODE_AUTO;
+    case VEH_MODE_GUIDED: return (uint32_t)COPTER_MODE_GUIDED;
     case VEH_MODE_HOLD: return (uint32_t)COPTER_MODE_LOITER;
     case VEH_MODE_LAND: return (uint32_t)COPTER_MODE_LAND;
     case VEH_MODE_RTL: return (uint32_t)COPTER_MODE_RTL;
@@ -151,6 +156,10 @@ static void send_heartbeat(veh_t *v)
 
     if (v->fl.mode == VEH_MODE_AUTO) {
         base = (uint8_t)(base | MAV_MODE_FLAG_GUIDED_ENABLED | MAV_MODE_FLAG_AUTO_ENABLED);
+    } else if (v->fl.mode == VEH_MODE_GUIDED) {
+        base = (uint8_t)(base | MAV_MODE_FLAG_GUIDED_ENABLED);
+    } else {
+        /* the other modes fly no ground-station target */
     }
     if (v->fl.armed) {
         base = (uint8_t)(base | MAV_MODE_FLAG_SAFETY_ARMED);
@@ -415,6 +424,7 @@ static int mode_of(uint32_t custom)
     switch (custom) {
     case (uint32_t)COPTER_MODE_STABILIZE: return (int)VEH_MODE_STANDBY;
     case (uint32_t)COPTER_MODE_AUTO: return (int)VEH_MODE_AUTO;
+    case (uint32_t)COPTER_MODE_GUIDED: return (int)VEH_MODE_GUIDED;
     case (uint32_t)COPTER_MODE_LOITER: return (int)VEH_MODE_HOLD;
     case (uint32_t)COPTER_MODE_RTL: return (int)VEH_MODE_RTL;
     case (uint32_t)COPTER_MODE_LAND: return (int)VEH_MODE_LAND;
@@ -428,10 +438,10 @@ static uint16_t ack_id(uint16_t command)
     return (command == 0u) ? (uint16_t)MAV_CMD_DO_SET_MODE : command;
 }
 
-/* COMMAND_LONG, COMMAND_INT (command, param1, param2) or SET_MODE (command 0, base mode,
- * custom mode): the supported ones wait for gcs_update, one at a time; the rest are answered
- * here. */
-static void on_command(veh_t *v, const mavlink_message_t *m, uint16_t command, float p1, float p2)
+/* COMMAND_LONG, COMMAND_INT (command, param1, param2, param7 or z) or SET_MODE (command 0,
+ * base mode, custom mode): the supported ones wait for gcs_update, one at a time; the rest are
+ * answered here. */
+static void on_command(veh_t *v, const mavlink_message_t *m, uint16_t command, const float p[3])
 {
     veh_command_t c;
 
@@ -439,16 +449,18 @@ static void on_command(veh_t *v, const mavlink_message_t *m, uint16_t command, f
     c.command = command;
     c.sys = m->sysid;
     c.comp = m->compid;
-    c.p[0] = p1;
-    c.p[1] = p2;
+    c.p[0] = p[0];
+    c.p[1] = p[1];
+    c.alt = p[2];
     switch (command) {
     case MAV_CMD_COMPONENT_ARM_DISARM: c.kind = VEH_CMD_ARM; break;
     case 0u: /* SET_MODE */
     case MAV_CMD_DO_SET_MODE: {
-        int mode = (isfinite(p2) && (p2 >= 0.0f) && (p2 < 256.0f)) ? mode_of((uint32_t)p2) : -1;
+        int mode =
+            (isfinite(p[1]) && (p[1] >= 0.0f) && (p[1] < 256.0f)) ? mode_of((uint32_t)p[1]) : -1;
         if (mode < 0) {
             veh_say("gcs: mode %s refused: not a mode of this vehicle",
-                    vp_float((char[24]){0}, 24u, p2, 0u));
+                    vp_float((char[24]){0}, 24u, p[1], 0u));
             ack(v, c.sys, c.comp, ack_id(command), (uint8_t)MAV_RESULT_FAILED);
             return;
         }
@@ -460,6 +472,7 @@ static void on_command(veh_t *v, const mavlink_message_t *m, uint16_t command, f
     case MAV_CMD_NAV_RETURN_TO_LAUNCH: c.kind = VEH_CMD_RTL; break;
     case MAV_CMD_NAV_LAND: c.kind = VEH_CMD_LAND; break;
     case MAV_CMD_DO_SET_MISSION_CURRENT: c.kind = VEH_CMD_SET_CURRENT; break;
+    case MAV_CMD_NAV_TAKEOFF: c.kind = VEH_CMD_TAKEOFF; break;
     default:
         v->c.link_cmd_unsupported++;
         ack(v, c.sys, c.comp, command, (uint8_t)MAV_RESULT_UNSUPPORTED);
@@ -548,15 +561,25 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
         mavlink_command_long_t c;
         mavlink_msg_command_long_decode(m, &c);
         if (for_us(v, c.target_system, c.target_component)) {
-            on_command(v, m, c.command, c.param1, c.param2);
+            const float p[3] = {c.param1, c.param2, c.param7};
+            on_command(v, m, c.command, p);
         }
         break;
     }
     case MAVLINK_MSG_ID_COMMAND_INT: {
         mavlink_command_int_t c;
         mavlink_msg_command_int_decode(m, &c);
-        if (for_us(v, c.target_system, c.target_component)) {
-            on_command(v, m, c.command, c.param1, c.param2);
+        if (!for_us(v, c.target_system, c.target_component)) {
+            break;
+        }
+        if ((c.command == (uint16_t)MAV_CMD_NAV_TAKEOFF) &&
+            (c.frame != (uint8_t)MAV_FRAME_GLOBAL_RELATIVE_ALT)) {
+            /* as ArduCopter: the altitude is above home, any other frame is a bad parameter */
+            veh_say("gcs: takeoff refused: frame %u (only GLOBAL_RELATIVE_ALT)", (unsigned)c.frame);
+            ack(v, m->sysid, m->compid, c.command, (uint8_t)MAV_RESULT_DENIED);
+        } else {
+            const float p[3] = {c.param1, c.param2, c.z};
+            on_command(v, m, c.command, p);
         }
         break;
     }
@@ -565,7 +588,8 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
         mavlink_msg_set_mode_decode(m, &c);
         if ((c.target_system == v->par.sysid) &&
             ((c.base_mode & (uint8_t)MAV_MODE_FLAG_CUSTOM_MODE_ENABLED) != 0u)) {
-            on_command(v, m, 0u, (float)c.base_mode, (float)c.custom_mode);
+            const float p[3] = {(float)c.base_mode, (float)c.custom_mode, 0.0f};
+            on_command(v, m, 0u, p);
         }
         break;
     }

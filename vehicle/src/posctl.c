@@ -11,7 +11,8 @@
  * acceleration, then lean angles and a total thrust for attitude_run.
  * The nav command of AUTO mode (auto.c fills s->nav) decides the legs:
  * takeoff, waypoint (reach, then hold), loiter (time, unlimited), circle
- * (loiter turns), land and RTL (climb, return, land).
+ * (loiter turns), land and RTL (climb, return, land). GUIDED and HOLD fly to one
+ * target and hold it: where the mode was entered, or a ground station's takeoff.
  *
  * Topics: takes the newest `estimate` at each entry point (the estimate does not
  * change while this file runs) and publishes the attitude and thrust setpoint on
@@ -50,6 +51,7 @@ const char *veh_mode_name(veh_mode_t m)
     case VEH_MODE_HOLD: return "HOLD";
     case VEH_MODE_LAND: return "LAND";
     case VEH_MODE_RTL: return "RTL";
+    case VEH_MODE_GUIDED: return "GUIDED";
     default: return "?";
     }
 }
@@ -445,10 +447,12 @@ void veh_set_mode(veh_t *v, veh_mode_t m)
     veh_say("vehicle: mode %s -> %s", veh_mode_name(s->mode), veh_mode_name(m));
     s->mode = m;
     veh_log_event(v, 3u, (uint8_t)m);
-    if (m == VEH_MODE_HOLD) {
+    if ((m == VEH_MODE_HOLD) || (m == VEH_MODE_GUIDED)) {
         for (i = 0; i < 3; i++) {
             s->hold_pos[i] = s->est.pos[i];
         }
+        (void)memset(&s->nav, 0, sizeof(s->nav));
+        s->nav.index = MT_MISSION_NONE;
         veh_leg_start(v, s->hold_pos);
     } else if (m == VEH_MODE_LAND) {
         for (i = 0; i < 3; i++) {
@@ -470,6 +474,42 @@ void veh_set_mode(veh_t *v, veh_mode_t m)
                 vp_float((char[16]){0}, 16u, vm_norm2(s->est.pos[0], s->est.pos[1]), 1u));
     } else {
         /* AUTO and STANDBY: the mission or nothing sets the targets */
+    }
+}
+
+void veh_user_takeoff(veh_t *v, float alt)
+{
+    veh_flight_t *s = &v->fl;
+
+    est_refresh(v);
+    (void)memset(&s->nav, 0, sizeof(s->nav));
+    s->nav.kind = VEH_NAV_TAKEOFF;
+    s->nav.index = MT_MISSION_NONE;
+    s->hold_pos[0] = s->est.pos[0];
+    s->hold_pos[1] = s->est.pos[1];
+    s->hold_pos[2] = -alt;
+    (void)memcpy(s->nav.dest, s->hold_pos, sizeof(s->nav.dest));
+    veh_leg_start(v, s->hold_pos);
+}
+
+/* GUIDED and HOLD: to the target, then hold it; on the ground, idle until a takeoff. */
+static void hold_run(veh_t *v, float dt)
+{
+    veh_flight_t *s = &v->fl;
+    veh_navcmd_t *n = &s->nav;
+
+    if (!s->flying && (n->kind != VEH_NAV_TAKEOFF)) {
+        pc_reset(v);
+        s->thrust = 0.0f;
+        return;
+    }
+    leg_update(v, dt);
+    pos_control(v, dt, DESCENT_MAX);
+    if ((n->kind == VEH_NAV_TAKEOFF) && !n->reached && s->leg_done &&
+        (fabsf(s->est.pos[2] - s->hold_pos[2]) < 0.5f)) {
+        nav_reached(v);
+        veh_say("vehicle: takeoff complete at %s m, holding",
+                vp_float((char[16]){0}, 16u, -s->est.pos[2], 1u));
     }
 }
 
@@ -533,9 +573,7 @@ static void nav_run(veh_t *v)
     switch (s->mode) {
     case VEH_MODE_AUTO: auto_run(v, dt); break;
     case VEH_MODE_HOLD:
-        leg_update(v, dt);
-        pos_control(v, dt, DESCENT_MAX);
-        break;
+    case VEH_MODE_GUIDED: hold_run(v, dt); break;
     case VEH_MODE_LAND: (void)land_run(v, s->land_pos, dt); break;
     case VEH_MODE_RTL: auto_rtl(v, dt); break;
     case VEH_MODE_STANDBY:

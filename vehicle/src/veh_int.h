@@ -170,6 +170,7 @@ typedef enum {
     VEH_MODE_HOLD = 2,    /**< position hold (mission stopped) */
     VEH_MODE_LAND = 3,    /**< land here */
     VEH_MODE_RTL = 4,     /**< return home at VEH_RTL_ALT_MIN or higher, land there */
+    VEH_MODE_GUIDED = 5,  /**< the ground station's target: hold, or a commanded takeoff */
 } veh_mode_t;
 
 /** Lowest return altitude of RTL (the mode and the mission command), m. */
@@ -271,11 +272,12 @@ typedef struct {
 
 /** The parameters a ground station reads and sets (link.c serves them; set only there,
  *  read by the components that use them). */
-#define VEH_PARAM_SYSID 0u          /**< SYSID_THISMAV: the MAVLink system id (1..255) */
-#define VEH_PARAM_WPNAV_SPEED 1u    /**< WPNAV_SPEED: cruise speed, cm/s (50..1500) */
-#define VEH_PARAM_FS_GCS_ENABLE 2u  /**< FS_GCS_ENABLE: link loss: 0 go on, 1 RTL, 5 LAND */
-#define VEH_PARAM_FS_GCS_TIMEOUT 3u /**< FS_GCS_TIMEOUT: link lost after it, s (2..120) */
-#define VEH_NPARAMS 4u
+#define VEH_PARAM_SYSID 0u           /**< SYSID_THISMAV: the MAVLink system id (1..255) */
+#define VEH_PARAM_WPNAV_SPEED 1u     /**< WPNAV_SPEED: cruise speed, cm/s (50..1500) */
+#define VEH_PARAM_FS_GCS_ENABLE 2u   /**< FS_GCS_ENABLE: link loss: 0 go on, 1 RTL, 5 LAND */
+#define VEH_PARAM_FS_GCS_TIMEOUT 3u  /**< FS_GCS_TIMEOUT: link lost after it, s (2..120) */
+#define VEH_PARAM_PILOT_TKOFF_ALT 4u /**< PILOT_TKOFF_ALT: takeoff altitude, cm (0..1000) */
+#define VEH_NPARAMS 5u
 #define VEH_FS_GCS_CONTINUE 0u
 #define VEH_FS_GCS_RTL 1u
 #define VEH_FS_GCS_LAND 5u
@@ -284,6 +286,7 @@ typedef struct {
     float wpnav_speed_cms;
     uint8_t fs_gcs_enable;
     float fs_gcs_timeout_s;
+    float pilot_tkoff_alt_cm;
     uint32_t gen[VEH_NPARAMS]; /**< per parameter: incremented by every accepted set */
 } veh_params_t;
 
@@ -382,26 +385,28 @@ float veh_battery_amps(const veh_t *v);
 
 /* ground-station commands (link.c decodes them, gcs.c runs them, link.c acknowledges) */
 typedef enum {
-    VEH_CMD_ARM = 0,      /**< p[0] 1 arm, 0 disarm; p[1] 21196 forces a disarm in flight */
-    VEH_CMD_MODE,         /**< custom_mode (ArduCopter's numbers, link.c) */
+    VEH_CMD_ARM = 0, /**< p[0] 1 arm, 0 disarm; p[1] 21196 forces a disarm in flight */
+    VEH_CMD_MODE,    /**< custom_mode (ArduCopter's numbers, link.c) */
     VEH_CMD_MISSION_START,
     VEH_CMD_RTL,
     VEH_CMD_LAND,
-    VEH_CMD_SET_CURRENT,  /**< p[0] the mission index */
+    VEH_CMD_SET_CURRENT, /**< p[0] the mission index */
+    VEH_CMD_TAKEOFF,     /**< alt: the altitude above home to climb to, m */
 } veh_cmd_kind_t;
 
 typedef enum {
-    VEH_CMD_DONE = 0,     /**< MAV_RESULT_ACCEPTED */
-    VEH_CMD_FAILED,       /**< MAV_RESULT_FAILED: not now (the reason is said) */
-    VEH_CMD_DENIED,       /**< MAV_RESULT_DENIED: never in this state (the reason is said) */
+    VEH_CMD_DONE = 0, /**< MAV_RESULT_ACCEPTED */
+    VEH_CMD_FAILED,   /**< MAV_RESULT_FAILED: not now (the reason is said) */
+    VEH_CMD_DENIED,   /**< MAV_RESULT_DENIED: never in this state (the reason is said) */
 } veh_cmd_result_t;
 
 typedef struct {
     veh_cmd_kind_t kind;
-    uint16_t command;     /**< the MAV_CMD it came as (0: SET_MODE) */
-    uint8_t sys;          /**< who sent it (the COMMAND_ACK goes there) */
+    uint16_t command; /**< the MAV_CMD it came as (0: SET_MODE) */
+    uint8_t sys;      /**< who sent it (the COMMAND_ACK goes there) */
     uint8_t comp;
     float p[2];
+    float alt;            /**< param7 (COMMAND_INT: z), m */
     uint32_t custom_mode; /**< VEH_CMD_MODE: the vehicle's mode it maps to (veh_mode_t) */
 } veh_command_t;
 
@@ -433,6 +438,8 @@ float veh_dist3(const float a[3], const float b[3]);
 void veh_disarm(veh_t *v, const char *why);
 bool veh_arm(veh_t *v);
 const char *veh_mode_name(veh_mode_t m);
+/** GUIDED or HOLD, armed, not flying: climb to alt m above home here, then hold there. */
+void veh_user_takeoff(veh_t *v, float alt);
 
 /* log records (logger.c), main-loop thread only */
 #define VEH_LOG_ATT 1u
