@@ -49,6 +49,7 @@ class Session:
         self.scale = 1.0
         self.msgs = []          # (wall time, message) of every message received, in order
         self.rc, self.out, self.err = None, "", ""
+        self.uploaded_at = 0    # FirmwareSession: the mark after its upload of the mission file
 
     def __enter__(self):
         self.conn = mavutil.mavlink_connection("udpin:127.0.0.1:0", source_system=GCS_SYSID,
@@ -311,6 +312,7 @@ class FirmwareSession(Session):
             if ack.type != mav.MAV_MISSION_ACCEPTED:
                 self.stop()
                 raise Timeout("the firmware refused %s: %s" % (self.mission, ack))
+            self.uploaded_at = self.mark()
             # the test's first look for the vehicle's HEARTBEAT is answered with the last one that
             # came during the upload, as the SITL's first one would be: its next requests then reach
             # the vehicle as early in its boot as on the SITL (tests that expect arming refused
