@@ -1088,6 +1088,51 @@ def t_mavlink_signing(S):
     check("MAVLink signing on" in s.out, "said at start")
 
 
+def t_mavlink_setup_signing(S):
+    """SETUP_SIGNING over the link, as MAVProxy's `signing setup` sends it and ArduPilot takes it:
+    the vehicle signs from then on and drops unsigned frames (a command goes unanswered, counted);
+    signed with the key, a command is answered; a signed all-zero key turns signing off and an
+    unsigned command is answered again. Runs on the firmware too (no command-line key)."""
+    key = bytes(range(33, 65))
+    g, sess = mavlink_session(S, ["--speedup", "10"])
+    mav = g.mav
+    with sess as s:
+        hb = s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        check(s.command(31000).result == mav.MAV_RESULT_UNSUPPORTED, "unsigned command answered")
+        # MAVLink's signature clock: 10 us units since 2015-01-01
+        stamp = int((time.time() - 1420070400) * 1e5)
+        check(s.conn.mav.signing.sig_count == 0, "no signed frame before SETUP_SIGNING")
+        mark = s.mark()
+        s.conn.mav.setup_signing_send(1, 1, key, stamp)
+        s.wait_text(lambda m: m.text == "link: signing on (SETUP_SIGNING from 255/190)", since=mark)
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        check(s.conn.mav.signing.sig_count > 0, "the vehicle signs (frames with a signature seen)")
+        mark = s.mark()
+        s.conn.mav.command_long_send(1, 1, 31000, 0, 0, 0, 0, 0, 0, 0, 0)
+        try:
+            s.wait("COMMAND_ACK", seconds=2, since=mark)
+            check(False, "an unsigned command was answered while signing is on")
+        except g.Timeout:
+            pass
+        s.conn.setup_signing(key, sign_outgoing=True)
+        check(s.command(31000).result == mav.MAV_RESULT_UNSUPPORTED, "signed command answered")
+        hb = s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        check(hb.get_signed() and s.conn.mav.signing.badsig_count == 0 and s.conn.mav.signing.goodsig_count > 5,
+              "pymavlink checks the vehicle's signatures: %d good, %d bad"
+              % (s.conn.mav.signing.goodsig_count, s.conn.mav.signing.badsig_count))
+        mark = s.mark()
+        s.conn.mav.setup_signing_send(1, 1, bytes(32), 0)  # signed: the key holder turns it off
+        # the ground station drops its key too (with a key, pymavlink drops unsigned frames)
+        s.conn.mav.signing.sign_outgoing = False
+        s.conn.mav.signing.secret_key = None
+        s.wait_text(lambda m: m.text == "link: signing off (SETUP_SIGNING from 255/190)", since=mark)
+        check(s.command(31000).result == mav.MAV_RESULT_UNSUPPORTED, "unsigned command answered again")
+        check(not s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1).get_signed(), "the vehicle signs no more")
+        s.stop()
+    counts = link_counts(s.out)
+    check(counts[7] >= 1 and counts[6] == 0, "the unsigned frames dropped are counted: %s" % (counts,))
+
+
 class MAVProxy:
     """MAVProxy (the pinned one in .tools/mavproxy, on the pinned pymavlink) as a console
     program: commands on its stdin, its output read line by line."""
@@ -1242,6 +1287,7 @@ TESTS = [
     ("mavlink: link loss (RTL, LAND, continue)", t_mavlink_link_loss),
     ("mavlink: items reached in the order mt-mission predicts (jumps)", t_mavlink_reached_order),
     ("mavlink: signing (unsigned command dropped, signed accepted)", t_mavlink_signing),
+    ("mavlink: SETUP_SIGNING turns signing on and off over the link", t_mavlink_setup_signing),
     ("mavproxy: wp load, arm throttle, mode auto: the mission flown; takeoff", t_mavproxy_flight),
 ]
 

@@ -542,6 +542,37 @@ static void on_ftp(veh_t *v, const mavlink_message_t *m)
     veh_link_send(v, &a);
 }
 
+/* SETUP_SIGNING, as ArduPilot handles it: the key and the timestamp take effect at once, for
+ * every frame after this one; an all-zero key with timestamp 0 turns signing off. While signing
+ * is on only a signed frame gets here (the parser drops the rest), so only the key holder can
+ * change or remove the key. The key lives in RAM until the vehicle restarts (ArduPilot keeps it
+ * in its storage). */
+static void on_setup_signing(veh_t *v, const mavlink_message_t *m)
+{
+    mavlink_setup_signing_t r;
+    bool zero = true;
+    size_t i;
+
+    mavlink_msg_setup_signing_decode(m, &r);
+    if (!for_us(v, r.target_system, r.target_component)) {
+        return;
+    }
+    for (i = 0u; i < sizeof(r.secret_key); i++) {
+        zero = zero && (r.secret_key[i] == 0u);
+    }
+    if (zero && (r.initial_timestamp == 0u)) {
+        g_link.rx_status.signing = NULL;
+        g_link.rx_status.signing_streams = NULL;
+        mavlink_get_channel_status(LINK_CHAN)->signing = NULL;
+        mavlink_get_channel_status(LINK_CHAN)->signing_streams = NULL;
+        veh_say("link: signing off (SETUP_SIGNING from %u/%u)", (unsigned)m->sysid,
+                (unsigned)m->compid);
+        return;
+    }
+    veh_link_signing(r.secret_key, r.initial_timestamp);
+    veh_say("link: signing on (SETUP_SIGNING from %u/%u)", (unsigned)m->sysid, (unsigned)m->compid);
+}
+
 static void on_message(veh_t *v, const mavlink_message_t *m)
 {
     v->c.link_rx_msgs++;
@@ -604,6 +635,7 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
     case MAVLINK_MSG_ID_PARAM_REQUEST_READ: on_param_request_read(v, m); break;
     case MAVLINK_MSG_ID_FILE_TRANSFER_PROTOCOL: on_ftp(v, m); break;
     case MAVLINK_MSG_ID_PARAM_SET: on_param_set(v, m); break;
+    case MAVLINK_MSG_ID_SETUP_SIGNING: on_setup_signing(v, m); break;
     default:
         if (!veh_mlink_on_message(v, m)) {
             v->c.link_rx_ignored++;
