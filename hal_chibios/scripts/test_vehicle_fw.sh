@@ -6,11 +6,11 @@
 #   CHIBIOS=/path/to/ChibiOS [BUILD=build] [PYTHON=python3] hal_chibios/scripts/test_vehicle_fw.sh [TEST-NAME-SUBSTRING]
 #
 # Builds the vehicle's ground-station session firmware for QEMU mps2-an386 (APP=vehicle
-# GCS=1, variant vehicle-gcs; no warning allowed) and runs the MAVLink tests of
-# tests/vehicle/run_tests.py against it (--firmware): each test starts QEMU with the link
-# UART on a local TCP socket (tests/vehicle/mavgcs.py, FirmwareSession) and drives the
-# vehicle as it drives the SITL. Tests the firmware cannot run say why (SKIP). Without
-# CHIBIOS it skips (exit 0).
+# GCS=1, variant vehicle-gcs; no warning allowed) and runs the ground-station tests of
+# tests/vehicle/run_tests.py against it (--firmware: the pymavlink and the MAVProxy ones):
+# each test starts QEMU with the link UART on a local TCP socket (tests/vehicle/mavgcs.py,
+# Qemu, FirmwareSession) and drives the vehicle as it drives the SITL. Tests the firmware
+# cannot run say why (SKIP). Without CHIBIOS it skips (exit 0).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -44,4 +44,4 @@ if grep -qi 'warning' "$log"; then
 fi
 echo "test-vehicle-fw: $OUT/vehicle-gcs/vehicle.elf: $(sed -n 's/^ *without .heap: //p' "$log")"
 exec "$PYTHON" "$ROOT/tests/vehicle/run_tests.py" --build "$BUILD" --firmware "$OUT/vehicle-gcs/vehicle.elf" \
-    -k "${1:-mavlink:}"
+    -k "${1:-}"

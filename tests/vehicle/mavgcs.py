@@ -249,6 +249,61 @@ FW_QEMU = ["qemu-system-arm", "-M", "mps2-an386", "-display", "none", "-monitor"
 FW_MIN_RATE = 1.0
 
 
+class Qemu:
+    """The firmware under QEMU (FW_QEMU): its console (UART0) read all along, its link UART a TCP
+    server on self.port that QEMU waits on before the guest starts. finish() ends the session with
+    'q' on the console and checks the firmware's own verdict."""
+
+    def __init__(self, elf):
+        self.proc = subprocess.Popen(FW_QEMU + ["-kernel", elf], stdin=subprocess.PIPE,
+                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=ROOT)
+        # "QEMU waiting for connection on: disconnected:tcp:127.0.0.1:PORT,server=on"
+        line = self.proc.stderr.readline().decode(errors="replace")
+        ports = re.findall(r"tcp:127\.0\.0\.1:(\d+)", line)
+        if not ports or ports[-1] == "0":
+            self.proc.kill()
+            raise Timeout("QEMU did not open the link's socket: %s" % line.strip())
+        self.port = int(ports[-1])
+        # the console and QEMU's messages are read all along (a full pipe would stall the UART)
+        self.console, self.errbuf = [], []
+        self.readers = [threading.Thread(target=self._read, args=(f, buf), daemon=True)
+                        for f, buf in ((self.proc.stdout, self.console), (self.proc.stderr, self.errbuf))]
+        for t in self.readers:
+            t.start()
+
+    @staticmethod
+    def _read(f, buf):
+        for chunk in iter(lambda: f.read1(4096), b""):
+            buf.append(chunk)
+
+    def quit(self):
+        """'q' on the console: the firmware prints its summary and exits through semihosting."""
+        if self.proc.poll() is None:
+            try:
+                self.proc.stdin.write(b"q")
+                self.proc.stdin.flush()
+            except OSError:
+                pass
+
+    def finish(self):
+        """Wait for the exit: (rc, console, QEMU's stderr). The firmware's own checks (every byte
+        received reached the vehicle, every byte sent left, the log intact, no task over its
+        budget): a failed one raises ValueError."""
+        try:
+            self.proc.wait(timeout=60)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            self.proc.wait()
+        for t in self.readers:
+            t.join(timeout=10)
+        out = b"".join(self.console).decode(errors="replace").replace("\r", "")
+        err = b"".join(self.errbuf).decode(errors="replace")
+        failed = [l for l in out.splitlines() if l.startswith(("CHECK FAILED", "HALT", "FAULT"))]
+        if failed or "== flight summary ==" not in out:
+            raise ValueError("the firmware's session: %s\n%s" % (failed, out[-1500:]))
+        return self.proc.returncode, out, err
+
+
 class FirmwareSession(Session):
     """The ChibiOS firmware's ground-station session (the FW_GCS=1 build: make test-vehicle-fw) under
     QEMU, its link UART a TCP socket, in place of the SITL. The arguments are the SITL's: --quiet
@@ -276,27 +331,15 @@ class FirmwareSession(Session):
                 raise Unsupported("the firmware session has no %s (a SITL option)" % a)
             i += 1
         self.scale = speedup / FW_MIN_RATE
-        self.console, self.errbuf = [], []  # chunks of the console (UART0) and of QEMU's stderr
         self.replay = []
 
     def __enter__(self):
-        self.proc = subprocess.Popen(FW_QEMU + ["-kernel", self.binary], stdin=subprocess.PIPE,
-                                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=ROOT)
-        # "QEMU waiting for connection on: disconnected:tcp:127.0.0.1:PORT,server=on"
-        line = self.proc.stderr.readline().decode(errors="replace")
-        ports = re.findall(r"tcp:127\.0\.0\.1:(\d+)", line)
-        if not ports or ports[-1] == "0":
-            self.proc.kill()
-            raise Timeout("QEMU did not open the link's socket: %s" % line.strip())
-        # the console and QEMU's messages are read all along (a full pipe would stall the UART)
-        self.readers = [threading.Thread(target=self._read, args=(f, buf), daemon=True)
-                        for f, buf in ((self.proc.stdout, self.console), (self.proc.stderr, self.errbuf))]
-        for t in self.readers:
-            t.start()
+        self.qemu = Qemu(self.binary)
+        self.proc = self.qemu.proc
         end = time.time() + 10
         while True:
             try:
-                self.conn = mavutil.mavlink_connection("tcp:127.0.0.1:%s" % ports[-1], source_system=GCS_SYSID,
+                self.conn = mavutil.mavlink_connection("tcp:127.0.0.1:%d" % self.qemu.port, source_system=GCS_SYSID,
                                                        source_component=GCS_COMPID, dialect="ardupilotmega",
                                                        autoreconnect=False)
                 break
@@ -325,11 +368,6 @@ class FirmwareSession(Session):
             return self.replay.pop()
         return super().poll(block)
 
-    @staticmethod
-    def _read(f, buf):
-        for chunk in iter(lambda: f.read1(4096), b""):
-            buf.append(chunk)
-
     def stop(self):
         """The ground station falls silent, then 'q' on the console: the summary, then the exit
         through semihosting. (On a byte stream a frame can be cut by the end of the session: the
@@ -343,26 +381,11 @@ class FirmwareSession(Session):
                         self.poll()
                 except Timeout:
                     pass
-                try:
-                    self.proc.stdin.write(b"q")
-                    self.proc.stdin.flush()
-                except OSError:
-                    pass
+                self.qemu.quit()
             try:
-                self.proc.wait(timeout=60)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
-                self.proc.wait()
-            for t in self.readers:
-                t.join(timeout=10)
-            self.rc = self.proc.returncode
-            self.out = b"".join(self.console).decode(errors="replace").replace("\r", "")
-            self.err = b"".join(self.errbuf).decode(errors="replace")
-            # the firmware's own checks (every byte received reached the vehicle, every byte sent
-            # left, the log intact, no task over its budget): a failed one fails the test
-            failed = [l for l in self.out.splitlines() if l.startswith(("CHECK FAILED", "HALT", "FAULT"))]
-            if failed or "== flight summary ==" not in self.out:
-                raise ValueError("the firmware's session: %s\n%s" % (failed, self.out[-1500:]))
+                self.rc, self.out, self.err = self.qemu.finish()
+            finally:
+                self.rc = self.proc.returncode  # a second stop (the with-block's exit) does nothing
 
 
 def wpl_items(path):

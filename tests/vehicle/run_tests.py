@@ -1137,13 +1137,13 @@ class MAVProxy:
     """MAVProxy (the pinned one in .tools/mavproxy, on the pinned pymavlink) as a console
     program: commands on its stdin, its output read line by line."""
 
-    def __init__(self, port, cwd):
+    def __init__(self, master, cwd):
         import queue
         import threading
         env = dict(os.environ, PYTHONPATH=os.pathsep.join(
             [os.path.join(ROOT, ".tools", "mavproxy"), os.path.join(ROOT, ".tools", "pymavlink")]))
         self.p = subprocess.Popen([PY, os.path.join(ROOT, ".tools", "mavproxy", "bin", "mavproxy.py"),
-                                   "--master", "udpin:127.0.0.1:%d" % port], cwd=cwd, env=env,
+                                   "--master", master], cwd=cwd, env=env,
                                   stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                   text=True, bufsize=1)
         self.q = queue.Queue()
@@ -1196,48 +1196,61 @@ def free_udp_port():
 def t_mavproxy_flight(S):
     """A real ground station, MAVProxy (pinned, from PyPI), driven as a user would type:
     `wp load` of a QGC WPL file, `arm throttle` (again while the pre-arm checks refuse),
-    `mode auto`; the vehicle flies the file's mission to its end at 4x, and MAVProxy shows its
-    messages; then `mode guided`, `arm throttle`, `takeoff 8`, `mode land`."""
-    port = free_udp_port()
+    `mode auto`; the vehicle flies the file's mission to its end at 4x (the firmware: at the pace
+    QEMU gives it), and MAVProxy shows its messages; then `mode guided`, `arm throttle`,
+    `takeoff 8`, `mode land`."""
     work = tempfile.mkdtemp(prefix="mavproxy-", dir=S.tmp)
-    mp = MAVProxy(port, work)
-    sitl = subprocess.Popen([S.sitl, "--quiet", "--mavlink", "udp:127.0.0.1:%d" % port, "--speedup", "4",
-                             "--timeout", "300"], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            text=True)
+    if S.firmware:
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import mavgcs
+        qemu = mavgcs.Qemu(S.firmware)
+        mp = MAVProxy("tcp:127.0.0.1:%d" % qemu.port, work)
+        scale = 4.0 / mavgcs.FW_MIN_RATE  # the waits below are written for 4x
+    else:
+        port = free_udp_port()
+        mp = MAVProxy("udpin:127.0.0.1:%d" % port, work)
+        sitl = subprocess.Popen([S.sitl, "--quiet", "--mavlink", "udp:127.0.0.1:%d" % port, "--speedup", "4",
+                                 "--timeout", "300"], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                text=True)
+        scale = 1.0
     try:
-        mp.expect([r"Detected vehicle 1:1"], 30)
+        mp.expect([r"Detected vehicle 1:1"], 30 * scale)
         mp.send("set heartbeat 10")  # 1 Hz of the vehicle's time at 4x needs more than 1 Hz here
         mp.send("wp load %s" % os.path.join(MISSIONS, "plain.waypoints"))
-        mp.expect([r"Sent all 7 waypoints"], 30)
-        mp.expect([r"AP: mission: 7 items uploaded"], 30)
-        end = time.time() + 60
+        mp.expect([r"Sent all 7 waypoints"], 30 * scale)
+        mp.expect([r"AP: mission: 7 items uploaded"], 30 * scale)
+        end = time.time() + 60 * scale
         while True:
             mp.send("arm throttle")
-            i, line = mp.expect([r"^ARMED", r"COMPONENT_ARM_DISARM: FAILED"], 10)
+            i, line = mp.expect([r"^ARMED", r"COMPONENT_ARM_DISARM: FAILED"], 10 * scale)
             if i == 0:
                 break
             check(time.time() < end, "MAVProxy could not arm: " + line)
             time.sleep(0.3)
         mp.send("mode auto")
-        mp.expect([r"AP: mission: #1 TAKEOFF started"], 30)
-        mp.expect([r"AP: mission: complete"], 120)
-        mp.expect([r"^DISARMED"], 30)
+        mp.expect([r"AP: mission: #1 TAKEOFF started"], 30 * scale)
+        mp.expect([r"AP: mission: complete"], 120 * scale)
+        mp.expect([r"^DISARMED"], 30 * scale)
         # then a takeoff as a MAVProxy user types it, and a landing
         mp.send("mode guided")
-        mp.expect([r"Mode GUIDED"], 30)
+        mp.expect([r"Mode GUIDED"], 30 * scale)
         mp.send("arm throttle")
-        mp.expect([r"^ARMED"], 30)
+        mp.expect([r"^ARMED"], 30 * scale)
         mp.send("takeoff 8")
-        mp.expect([r"NAV_TAKEOFF: ACCEPTED"], 30)
-        mp.expect([r"AP: vehicle: takeoff complete at"], 60)
+        mp.expect([r"NAV_TAKEOFF: ACCEPTED"], 30 * scale)
+        mp.expect([r"AP: vehicle: takeoff complete at"], 60 * scale)
         mp.send("mode land")
-        mp.expect([r"AP: vehicle: landed at"], 60)
-        mp.expect([r"^DISARMED"], 30)
+        mp.expect([r"AP: vehicle: landed at"], 60 * scale)
+        mp.expect([r"^DISARMED"], 30 * scale)
     finally:
         mp.close()
-        if sitl.poll() is None:
-            sitl.send_signal(signal.SIGINT)
-        out, err = sitl.communicate(timeout=30)
+        if S.firmware:
+            qemu.quit()
+            _, out, _ = qemu.finish()
+        else:
+            if sitl.poll() is None:
+                sitl.send_signal(signal.SIGINT)
+            out, err = sitl.communicate(timeout=30)
     flown = [re.match(r"mission: #(\d+) (\w+) started", e).group(1, 2) for e in S_events(out)
              if re.match(r"mission: #\d+ \w+ started", e)]
     check(flown == [("1", "TAKEOFF"), ("2", "WAYPOINT"), ("3", "WAYPOINT"), ("4", "WAYPOINT"),
@@ -1316,13 +1329,13 @@ def main(argv):
     n = 0
     t0 = time.time()
     for name, fn in TESTS:
-        if args.k not in name:
-            continue
+        if args.k not in name or (S.firmware and not name.startswith(("mavlink:", "mavproxy:"))):
+            continue  # the firmware runs the ground-station sessions only
         n += 1
         t1 = time.time()
         try:
-            if S.firmware and (not name.startswith("mavlink:") or fn in FW_SKIP):
-                raise Skip(FW_SKIP.get(fn, "not a ground-station session"))
+            if S.firmware and fn in FW_SKIP:
+                raise Skip(FW_SKIP[fn])
             fn(S)
             print("PASS %-62s %6.1f s" % (name, time.time() - t1))
         except Skip as e:
