@@ -2,7 +2,8 @@
 /**
  * @file link_int.h
  * @brief Internal to the ground-station link's files: the generated MAVLink headers, the
- *        transmit primitive (link_tx.c) and the mission protocol (mission_link.c). Calls go
+ *        transmit primitive (link_tx.c), the parameters (link_param.c) and the mission
+ *        protocol (mission_link.c). Calls go link.c -> link_param.c -> link_tx.c,
  *        link.c -> mission_link.c -> link_tx.c and link.c -> link_tx.c (no cycle).
  */
 #ifndef VEH_LINK_INT_H
@@ -28,6 +29,14 @@ void veh_link_tx_init(void);
 void veh_link_send(veh_t *v, const mavlink_message_t *m);
 /** Milliseconds since boot (the time fields of the streams). */
 uint32_t veh_link_boot_ms(void);
+/** A message's target is this vehicle (a system or component of 0 is a broadcast). */
+bool veh_link_for_us(const veh_t *v, uint8_t sys, uint8_t comp);
+
+/* ---- link_param.c: the parameters ---- */
+/** PARAM_VALUE of parameter i (< VEH_NPARAMS). */
+void veh_lparam_send(veh_t *v, uint32_t i);
+/** PARAM_REQUEST_READ or PARAM_SET: handled here (true), or not one (false). */
+bool veh_lparam_on_message(veh_t *v, const mavlink_message_t *m);
 
 /* ---- mission_link.c: the mission protocol ---- */
 void veh_mlink_init(void);

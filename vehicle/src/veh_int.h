@@ -8,8 +8,9 @@
  *   attctl.c    attitude_run (fast): attitude and rate controllers
  *   motors.c    motors_output (fast): mixer, motor outputs
  *   gcs.c       gcs_update: ground-station commands; telemetry_send
- *   link.c      the MAVLink link (gcs_update and telemetry_send call it): parameters,
- *               telemetry streams, console lines as STATUSTEXT
+ *   link.c      the MAVLink link (gcs_update and telemetry_send call it): commands,
+ *               telemetry streams, console lines as STATUSTEXT; its parameters
+ *               (link_param.c), mission protocol (mission_link.c), transmit (link_tx.c)
  *   baro.c      the barometer driver (timer proc) and baro_update
  *   gps.c       gps_update
  *   posctl.c    nav_update: flight modes, navigation targets, position controller
