@@ -115,6 +115,18 @@ class Session:
                 return m
         raise Timeout("no %s in %d s" % (mtype, seconds))
 
+    def wait_any(self, mtype, since, seconds):
+        """The first message of type mtype received after the mark since, waiting up to seconds
+        for it; None if none came."""
+        end = time.time() + seconds * self.scale
+        while True:
+            for _, m in self.msgs[since:]:
+                if m.get_type() == mtype:
+                    return m
+            if time.time() > end:
+                return None
+            self.poll()
+
     def lines(self, since=0, complete=False):
         """Console lines (STATUSTEXT, the chunks of one id joined in chunk_seq order) received
         after the mark since. A line whose first chunk came before the mark is left out, and so

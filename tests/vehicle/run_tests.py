@@ -700,6 +700,58 @@ def t_mavlink_no_mission(S, binary=None):
     return s
 
 
+def t_mavlink_flood(S):
+    """Bad input on a byte stream, by name: truncated frames (a frame cut short, then the next
+    ones) and a flood of 1000 parameter reads sent at once. The vehicle never stops answering,
+    and nothing is lost silently: a cut frame is counted (frames dropped or bytes outside a
+    valid frame), and every read is either answered or counted where it was lost (the SITL:
+    datagrams dropped, messages not sent; the firmware: UART bytes dropped or overrun)."""
+    g, sess = mavlink_session(S, ["--speedup", "10"])
+    mav = g.mav
+    n = 1000
+    with sess as s:
+        s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1)
+        frame = s.conn.mav.param_request_read_encode(1, 1, b"WPNAV_SPEED", -1).pack(s.conn.mav)
+        for cut in (3, len(frame) // 2, len(frame) - 1):
+            s.conn.write(frame[:cut])
+            mark = s.mark()
+            end = time.time() + 10 * s.scale
+            # the cut frame swallows the start of what follows: ask until an answer comes
+            while s.wait_any("PARAM_VALUE", since=mark, seconds=0.5) is None:
+                check(time.time() < end, "no answer after a frame cut at %d bytes" % cut)
+                s.conn.mav.param_request_read_send(1, 1, b"WPNAV_SPEED", -1)
+        mark = s.mark()
+        for _ in range(n):
+            s.conn.mav.param_request_read_send(1, 1, b"", 1)  # by index: WPNAV_SPEED
+        # the answers, until all came or none for 2 s (1 s of vehicle time answers 400)
+        answers, quiet = 0, time.time() + 2 * s.scale
+        while answers < n and time.time() < quiet:
+            s.poll()
+            got = len([m for _, m in s.msgs[mark:] if m.get_type() == "PARAM_VALUE"])
+            if got > answers:
+                answers, quiet = got, time.time() + 2 * s.scale
+        check(s.command(31000).result == mav.MAV_RESULT_UNSUPPORTED, "a command answered after the flood")
+        s.stop()
+    out = s.out
+    sent, nbytes, full, lost, recvd, ignored, dropped, unsigned, noise, unknown, refused, unsup = link_counts(out)
+    check(dropped + noise > 0, "the cut frames are counted: %d frames dropped, %d bytes outside" % (dropped, noise))
+    if S.firmware:
+        m = re.search(r"link UART: \d+ bytes received, (\d+) dropped \(receive ring full\), (\d+) overruns", out)
+        check(m is not None, "link UART line:\n" + out[-1500:])
+        lost_in = int(m.group(1)) + int(m.group(2))
+        check(answers == n or lost_in > 0 or full > 0 or dropped > 3,
+              "%d of %d reads answered, no loss counted (%s)" % (answers, n, m.group(0)))
+    else:
+        m = re.search(r"MAVLink udp: \d+ bytes received, (\d+) datagrams dropped", out)
+        check(m is not None, "udp line:\n" + out[-1500:])
+        # every read reached the parser or was counted as a dropped datagram; every one that
+        # reached it was answered or counted as not sent
+        check(answers + full + int(m.group(1)) >= n, "%d of %d reads answered, %d not sent, %d datagrams dropped"
+              % (answers, n, full, int(m.group(1))))
+    print("     flood: %d of %d reads answered; link: %d not sent, %d frames dropped, %d bytes outside frames; %s"
+          % (answers, n, full, dropped, noise, m.group(0)))
+
+
 def close_or_nan(a, b):
     return (math.isnan(a) and math.isnan(b)) or abs(a - b) < 1e-3
 
@@ -1293,6 +1345,7 @@ TESTS = [
     ("mavlink: a ground station watches a flight (streams, parameters, mission)", t_mavlink_flight),
     ("mavlink: no mission, garbage on the link, a second ground station", t_mavlink_no_mission),
     ("mavlink: the same session in the ASan+UBSan build", t_mavlink_sanitizers),
+    ("mavlink: truncated frames and a flood of requests", t_mavlink_flood),
     ("mavlink: mission upload, download, rejections, clear, set current", t_mavlink_mission_upload),
     ("mavlink: mission protocol timing, sequence, replaced in flight", t_mavlink_mission_protocol),
     ("mavlink: commands (arm, modes, mission start, current, RTL, land)", t_mavlink_commands),
