@@ -993,7 +993,11 @@ def t_mavlink_guided_takeoff(S):
         check(hb.base_mode & mav.MAV_MODE_FLAG_GUIDED_ENABLED and not hb.base_mode & mav.MAV_MODE_FLAG_AUTO_ENABLED,
               "GUIDED flags: %s" % hb)
         check(s.command(mav.MAV_CMD_COMPONENT_ARM_DISARM, 1.0).result == mav.MAV_RESULT_ACCEPTED, "arm in GUIDED")
-        heartbeat_mode(s, mav, mav.COPTER_MODE_GUIDED)
+        hb = s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1 and m.base_mode & mav.MAV_MODE_FLAG_SAFETY_ARMED,
+                    since=s.sent_at)
+        # as ArduCopter: armed on the ground is STANDBY (QGroundControl: not flying)
+        check(hb.custom_mode == mav.COPTER_MODE_GUIDED and hb.system_status == mav.MAV_STATE_STANDBY,
+              "armed on the ground: %s" % hb)
         mark = s.mark()
         s.conn.mav.command_int_send(1, 1, mav.MAV_FRAME_GLOBAL, mav.MAV_CMD_NAV_TAKEOFF, 0, 0, 0, 0, 0, 0, 0, 0,
                                     alt)
@@ -1020,7 +1024,8 @@ def t_mavlink_guided_takeoff(S):
             check(abs(m.relative_alt / 1000.0 - alt) < 0.7, "holds %.1f m: %.2f m" % (alt, m.relative_alt / 1000.0))
             # within 1 m: 1e-7 degree is 1.1 cm of latitude, 0.77 cm of longitude at 46.5 N
             check(abs(m.lat - start.lat) < 90 and abs(m.lon - start.lon) < 130, "above the takeoff point %s: %s" % (start, m))
-        heartbeat_mode(s, mav, mav.COPTER_MODE_GUIDED)
+        hb = heartbeat_mode(s, mav, mav.COPTER_MODE_GUIDED)
+        check(hb.system_status == mav.MAV_STATE_ACTIVE, "in the air: ACTIVE: %s" % hb)
         a = s.command(mav.MAV_CMD_NAV_TAKEOFF, p7=20.0)
         check(a.result == mav.MAV_RESULT_FAILED, "takeoff again: %s" % a)
         s.wait_text(lambda m: m.text == "gcs: takeoff refused: already flying", since=s.sent_at)
@@ -1065,6 +1070,10 @@ def t_mavlink_link_loss(S):
             s.sent_at = quiet = s.mark()
             s.wait_text(lambda m: m.text == "failsafe: ground station link lost: " + action, seconds=30,
                    since=quiet)
+            # a failsafe holds: CRITICAL, as ArduCopter says it (FS_GCS_ENABLE 0: none, ACTIVE)
+            hb = s.wait("HEARTBEAT", lambda m: m.get_srcSystem() == 1, since=s.mark())
+            check(hb.system_status == (mav.MAV_STATE_ACTIVE if mode is None else mav.MAV_STATE_CRITICAL),
+                  "%s: %s" % (action, hb))
             if mode is not None:
                 heartbeat_mode(s, mav, mode)
             s.hb_on = True

@@ -82,7 +82,14 @@ static void send_heartbeat(veh_t *v)
     }
     if (v->fl.armed) {
         base = (uint8_t)(base | MAV_MODE_FLAG_SAFETY_ARMED);
+    }
+    /* as ArduCopter: STANDBY on the ground (armed or not), ACTIVE in the air, CRITICAL while a
+     * failsafe holds (here the link-loss one); QGroundControl takes armed and ACTIVE as flying */
+    if (v->fl.flying) {
         state = (uint8_t)MAV_STATE_ACTIVE;
+    }
+    if (v->gcs.link_lost && (v->par.fs_gcs_enable != (uint8_t)VEH_FS_GCS_CONTINUE)) {
+        state = (uint8_t)MAV_STATE_CRITICAL; /* FS_GCS_ENABLE 0: no failsafe, as ArduCopter */
     }
     if (v->crashed) {
         state = (uint8_t)MAV_STATE_EMERGENCY;
