@@ -155,7 +155,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             }
             memcpy(_MAV_PAYLOAD_NON_CONST(&m), data + i, len);
             i += len;
-            /* from a ground station (255/190) to system 1 unless the payload says otherwise */
+            /* addressed to the vehicle (1/1), so the handlers past the link's target check see
+             * the input, unless the selector byte's top bit keeps the payload's own target */
+            if (((data[i - len - 2u] & 0x80u) == 0u) &&
+                ((e->flags & MAV_MSG_ENTRY_FLAG_HAVE_TARGET_SYSTEM) != 0u)) {
+                _MAV_PAYLOAD_NON_CONST(&m)[e->target_system_ofs] = 1;
+                if ((e->flags & MAV_MSG_ENTRY_FLAG_HAVE_TARGET_COMPONENT) != 0u) {
+                    _MAV_PAYLOAD_NON_CONST(&m)[e->target_component_ofs] = 1;
+                }
+            }
+            /* from a ground station (255/190) */
             (void)mavlink_finalize_message_chan(&m, 255u, 190u, MAVLINK_COMM_1, e->min_msg_len,
                                                 e->max_msg_len, e->crc_extra);
             n = mavlink_msg_to_send_buffer(frame, &m);

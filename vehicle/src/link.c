@@ -431,7 +431,20 @@ static void on_setup_signing(veh_t *v, const mavlink_message_t *m)
 
 static void on_message(veh_t *v, const mavlink_message_t *m)
 {
+    const mavlink_msg_entry_t *e = mavlink_get_msg_entry(m->msgid);
+
     v->c.link_rx_msgs++;
+    /* a message addressed to another system or component is not ours, whatever it is (as
+     * ArduPilot's routing: a mission upload for vehicle 2 must not load on vehicle 1) */
+    if ((e != NULL) && ((e->flags & (uint8_t)MAV_MSG_ENTRY_FLAG_HAVE_TARGET_SYSTEM) != 0u)) {
+        uint8_t comp = ((e->flags & (uint8_t)MAV_MSG_ENTRY_FLAG_HAVE_TARGET_COMPONENT) != 0u)
+                           ? _MAV_RETURN_uint8_t(m, e->target_component_ofs)
+                           : 0u;
+        if (!veh_link_for_us(v, _MAV_RETURN_uint8_t(m, e->target_system_ofs), comp)) {
+            v->c.link_rx_ignored++;
+            return;
+        }
+    }
     switch (m->msgid) {
     case MAVLINK_MSG_ID_HEARTBEAT:
         if (m->sysid == v->par.sysid) {
