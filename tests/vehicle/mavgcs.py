@@ -218,6 +218,13 @@ class Session:
         self.conn.mav.command_long_send(1, 1, cmd, 0, p1, p2, 0, 0, 0, 0, p7)
         return self.wait("COMMAND_ACK", lambda m: m.command == cmd, seconds=seconds, since=self.sent_at)
 
+    def unanswered(self, cmd, p1=0.0, seconds=2):
+        """COMMAND_LONG to the vehicle (signed or not, as the connection is set up): True when
+        no COMMAND_ACK comes within seconds."""
+        mark = self.mark()
+        self.conn.mav.command_long_send(1, 1, cmd, 0, p1, 0, 0, 0, 0, 0, 0)
+        return self.wait_any("COMMAND_ACK", since=mark, seconds=seconds) is None
+
     def arm_and_auto(self, seconds=30):
         """Arm (again while the pre-arm checks refuse: the barometer calibrates, the GPS needs
         fixes), then AUTO: the ACKs of both."""

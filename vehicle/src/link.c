@@ -263,6 +263,13 @@ static void send_said(veh_t *v)
 
 /* ---- receive (a target of 0 is a broadcast) ---------------------------------------- */
 
+/* The target (system, component) is this vehicle; on_message checks it once for every
+ * message that has one, before any handler. */
+static bool for_us(const veh_t *v, uint8_t sys, uint8_t comp)
+{
+    return ((sys == v->par.sysid) || (sys == 0u)) && ((comp == LINK_COMPID) || (comp == 0u));
+}
+
 /* ---- commands: decoded here, run by gcs_update (gcs.c), acknowledged here ---------------- */
 
 static void ack(veh_t *v, uint8_t sys, uint8_t comp, uint16_t command, uint8_t result)
@@ -381,9 +388,6 @@ static void on_ftp(veh_t *v, const mavlink_message_t *m)
     uint16_t seq;
 
     mavlink_msg_file_transfer_protocol_decode(m, &r);
-    if (!veh_link_for_us(v, r.target_system, r.target_component)) {
-        return;
-    }
     seq = (uint16_t)(((uint32_t)r.payload[0] | ((uint32_t)r.payload[1] << 8)) + 1u);
     (void)memset(out, 0, sizeof(out));
     out[0] = (uint8_t)(seq & 0xFFu);
@@ -403,16 +407,13 @@ static void on_ftp(veh_t *v, const mavlink_message_t *m)
  * is on only a signed frame gets here (the parser drops the rest), so only the key holder can
  * change or remove the key. The key lives in RAM until the vehicle restarts (ArduPilot keeps it
  * in its storage). */
-static void on_setup_signing(veh_t *v, const mavlink_message_t *m)
+static void on_setup_signing(const mavlink_message_t *m)
 {
     mavlink_setup_signing_t r;
     bool zero = true;
     size_t i;
 
     mavlink_msg_setup_signing_decode(m, &r);
-    if (!veh_link_for_us(v, r.target_system, r.target_component)) {
-        return;
-    }
     for (i = 0u; i < sizeof(r.secret_key); i++) {
         zero = zero && (r.secret_key[i] == 0u);
     }
@@ -440,7 +441,7 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
         uint8_t comp = ((e->flags & (uint8_t)MAV_MSG_ENTRY_FLAG_HAVE_TARGET_COMPONENT) != 0u)
                            ? _MAV_RETURN_uint8_t(m, e->target_component_ofs)
                            : 0u;
-        if (!veh_link_for_us(v, _MAV_RETURN_uint8_t(m, e->target_system_ofs), comp)) {
+        if (!for_us(v, _MAV_RETURN_uint8_t(m, e->target_system_ofs), comp)) {
             v->c.link_rx_ignored++;
             return;
         }
@@ -460,7 +461,7 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
     case MAVLINK_MSG_ID_COMMAND_LONG: {
         mavlink_command_long_t c;
         mavlink_msg_command_long_decode(m, &c);
-        if (veh_link_for_us(v, c.target_system, c.target_component)) {
+        {
             const float p[3] = {c.param1, c.param2, c.param7};
             on_command(v, m, c.command, p);
         }
@@ -469,9 +470,6 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
     case MAVLINK_MSG_ID_COMMAND_INT: {
         mavlink_command_int_t c;
         mavlink_msg_command_int_decode(m, &c);
-        if (!veh_link_for_us(v, c.target_system, c.target_component)) {
-            break;
-        }
         if ((c.command == (uint16_t)MAV_CMD_NAV_TAKEOFF) &&
             (c.frame != (uint8_t)MAV_FRAME_GLOBAL_RELATIVE_ALT)) {
             /* as ArduCopter: the altitude is above home, any other frame is a bad parameter */
@@ -486,23 +484,15 @@ static void on_message(veh_t *v, const mavlink_message_t *m)
     case MAVLINK_MSG_ID_SET_MODE: {
         mavlink_set_mode_t c;
         mavlink_msg_set_mode_decode(m, &c);
-        if ((c.target_system == v->par.sysid) &&
-            ((c.base_mode & (uint8_t)MAV_MODE_FLAG_CUSTOM_MODE_ENABLED) != 0u)) {
+        if ((c.base_mode & (uint8_t)MAV_MODE_FLAG_CUSTOM_MODE_ENABLED) != 0u) {
             const float p[3] = {(float)c.base_mode, (float)c.custom_mode, 0.0f};
             on_command(v, m, 0u, p);
         }
         break;
     }
-    case MAVLINK_MSG_ID_PARAM_REQUEST_LIST: {
-        mavlink_param_request_list_t r;
-        mavlink_msg_param_request_list_decode(m, &r);
-        if (veh_link_for_us(v, r.target_system, r.target_component)) {
-            g_link.param_next = 0u;
-        }
-        break;
-    }
+    case MAVLINK_MSG_ID_PARAM_REQUEST_LIST: g_link.param_next = 0u; break;
     case MAVLINK_MSG_ID_FILE_TRANSFER_PROTOCOL: on_ftp(v, m); break;
-    case MAVLINK_MSG_ID_SETUP_SIGNING: on_setup_signing(v, m); break;
+    case MAVLINK_MSG_ID_SETUP_SIGNING: on_setup_signing(m); break;
     default:
         if (!veh_lparam_on_message(v, m) && !veh_mlink_on_message(v, m)) {
             v->c.link_rx_ignored++;

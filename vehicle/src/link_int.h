@@ -29,13 +29,12 @@ void veh_link_tx_init(void);
 void veh_link_send(veh_t *v, const mavlink_message_t *m);
 /** Milliseconds since boot (the time fields of the streams). */
 uint32_t veh_link_boot_ms(void);
-/** A message's target is this vehicle (a system or component of 0 is a broadcast). */
-bool veh_link_for_us(const veh_t *v, uint8_t sys, uint8_t comp);
 
 /* ---- link_param.c: the parameters ---- */
 /** PARAM_VALUE of parameter i (< VEH_NPARAMS). */
 void veh_lparam_send(veh_t *v, uint32_t i);
-/** PARAM_REQUEST_READ or PARAM_SET: handled here (true), or not one (false). */
+/** PARAM_REQUEST_READ or PARAM_SET (link.c checked its target): handled here (true), or not
+ *  one (false). */
 bool veh_lparam_on_message(veh_t *v, const mavlink_message_t *m);
 
 /* ---- mission_link.c: the mission protocol ---- */

@@ -108,9 +108,6 @@ static void on_param_request_read(veh_t *v, const mavlink_message_t *m)
     uint32_t i;
 
     mavlink_msg_param_request_read_decode(m, &r);
-    if (!veh_link_for_us(v, r.target_system, r.target_component)) {
-        return;
-    }
     i = (r.param_index >= 0) ? (uint32_t)r.param_index : param_find(r.param_id);
     if (i < VEH_NPARAMS) {
         veh_lparam_send(v, i);
@@ -128,9 +125,6 @@ static void on_param_set(veh_t *v, const mavlink_message_t *m)
     float x;
 
     mavlink_msg_param_set_decode(m, &r);
-    if (!veh_link_for_us(v, r.target_system, r.target_component)) {
-        return;
-    }
     i = param_find(r.param_id);
     if (i >= VEH_NPARAMS) {
         v->c.link_param_unknown++;

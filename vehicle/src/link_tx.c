@@ -48,8 +48,3 @@ uint32_t veh_link_boot_ms(void)
 {
     return (uint32_t)((veh_now() - veh_boot_us()) / 1000u);
 }
-
-bool veh_link_for_us(const veh_t *v, uint8_t sys, uint8_t comp)
-{
-    return ((sys == v->par.sysid) || (sys == 0u)) && ((comp == VEH_LINK_COMPID) || (comp == 0u));
-}
