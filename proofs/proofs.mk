@@ -24,7 +24,7 @@ WP_WHY3CONF  := $(WP_ROOT)/why3.conf
 # last and leave one core idle at the end); modules not named here follow, alphabetically.
 # chibios_time is the ChibiOS port's time arithmetic (hal_chibios/port/mt_chibios_time.c): the
 # port's proofs go through the same flags and the same gate as the kernel's.
-WP_ORDER     := sched sched_loop wq_run bus mission bus_sub mission_check ring mission_seq objring \
+WP_ORDER     := sched sched_loop wq_run bus mission bus_sub mission_check ring mission_seq objring bus_reg \
                 wq wq_timer proc wq_report laws time sem chibios_time status
 WP_ALL_MODS  := $(filter-out invoke mission_invoke bus_invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws chibios_time
 WP_MODULES   := $(filter $(WP_ALL_MODS),$(WP_ORDER)) $(filter-out $(WP_ORDER),$(WP_ALL_MODS))

@@ -2,10 +2,10 @@
 /**
  * @file bus_sub.c
  * @brief Topic bus (see mt/bus.h), the lock-free subscriber side: attach, the update test and
- *        the copies, checked by per-slot stamps (seqlock). Publishers and the subscriber calls
- *        that take the kernel lock are in bus.c.
+ *        the copies, checked by per-slot stamps (seqlock). Publishers are in bus.c, the
+ *        subscriber calls that take the kernel lock in bus_reg.c.
  */
-#include "mt/bus.h"
+#include "mt/bus_sub.h"
 
 #include "mt_atomic.h"
 #include "mt_bus_int.h"

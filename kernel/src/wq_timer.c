@@ -4,7 +4,7 @@
  * @brief Work queues, the timers: delayed and interval items, cancel, and the timer tick that
  *        activates the due items (see mt/wq.h; the queue core is in wq.c).
  */
-#include "mt/wq.h"
+#include "mt/wq_timer.h"
 
 #include "mt_sat.h"
 #include "mt_wq_int.h"

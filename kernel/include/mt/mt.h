@@ -7,6 +7,7 @@
 #define MT_MT_H
 
 #include "mt/bus.h"
+#include "mt/bus_sub.h"
 #include "mt/config.h"
 #include "mt/mission.h"
 #include "mt/objring.h"
@@ -17,6 +18,7 @@
 #include "mt/status.h"
 #include "mt/time.h"
 #include "mt/wq.h"
+#include "mt/wq_timer.h"
 #include "mt_port.h"
 
 #endif /* MT_MT_H */
