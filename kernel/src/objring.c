@@ -6,6 +6,7 @@
 #include "mt/objring.h"
 
 #include "mt_atomic.h"
+#include "mt_copy.h"
 #include "mt_ring_idx.h"
 
 /* Lemma (ghost function, proved by WP): the invariant from its parts. Lets the
@@ -75,25 +76,6 @@ static uint8_t *slot_ptr(const mt_oring_t *r, uint32_t slot)
     return r->buf + ((uint64_t)slot * r->elem);
 }
 
-/*@ requires \valid(dst + (0 .. n - 1)) && \valid_read(src + (0 .. n - 1));
-    requires \separated(dst + (0 .. n - 1), src + (0 .. n - 1));
-    assigns dst[0 .. n - 1];
-    ensures \forall integer k; 0 <= k < n ==> dst[k] == src[k];
-*/
-static void copy_bytes(uint8_t *dst, const uint8_t *src, uint32_t n)
-{
-    uint32_t k;
-
-    /*@ loop invariant 0 <= k <= n;
-        loop invariant \forall integer j; 0 <= j < k ==> dst[j] == src[j];
-        loop assigns k, dst[0 .. n - 1];
-        loop variant n - k;
-    */
-    for (k = 0u; k < n; k++) {
-        dst[k] = src[k];
-    }
-}
-
 /* Producer's count, with a fresh head when the cached one says >= cap. */
 /*@ requires MtORingInv(r);
     assigns r->head_cache;
@@ -128,7 +110,7 @@ static uint32_t producer_count(mt_oring_t *r)
 // cppcheck-suppress misra-c2012-5.9 ; D-106 module-local helper, one per translation unit
 static void put(mt_oring_t *r, const uint8_t *obj)
 {
-    copy_bytes(slot_ptr(r, mt_idx_slot(r->tail, r->slots)), obj, r->elem);
+    mt_copy_bytes(slot_ptr(r, mt_idx_slot(r->tail, r->slots)), obj, r->elem);
     mt_store_release_u32(&r->tail, mt_idx_add(r->tail, 1u, r->slots));
 }
 
@@ -225,7 +207,7 @@ mt_status_t mt_oring_pop(mt_oring_t *r, void *out)
         //@ assert was_empty: MtIdxCount(r->tail, \at(r->head, Pre), r->slots) == 0;
         return MT_E_EMPTY;
     }
-    copy_bytes((uint8_t *)out, slot_ptr(r, mt_idx_slot(r->head, r->slots)), r->elem);
+    mt_copy_bytes((uint8_t *)out, slot_ptr(r, mt_idx_slot(r->head, r->slots)), r->elem);
     /*@ assert copied: \forall integer k; 0 <= k < r->elem ==>
             ((uint8_t *)out)[k] == r->buf[MtIdxSlot(r->head, r->slots) * r->elem + k]; */
     /* copy done before the slot is released */
@@ -238,7 +220,7 @@ mt_status_t mt_oring_peek(mt_oring_t *r, void *out)
     if (consumer_sync(r) == 0u) {
         return MT_E_EMPTY;
     }
-    copy_bytes((uint8_t *)out, slot_ptr(r, mt_idx_slot(r->head, r->slots)), r->elem);
+    mt_copy_bytes((uint8_t *)out, slot_ptr(r, mt_idx_slot(r->head, r->slots)), r->elem);
     return MT_OK;
 }
 
@@ -247,7 +229,7 @@ mt_status_t mt_oring_update_front(mt_oring_t *r, const void *obj)
     if (consumer_sync(r) == 0u) {
         return MT_E_EMPTY;
     }
-    copy_bytes(slot_ptr(r, mt_idx_slot(r->head, r->slots)), (const uint8_t *)obj, r->elem);
+    mt_copy_bytes(slot_ptr(r, mt_idx_slot(r->head, r->slots)), (const uint8_t *)obj, r->elem);
     return MT_OK;
 }
 

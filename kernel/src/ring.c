@@ -6,6 +6,7 @@
 #include "mt/ring.h"
 
 #include "mt_atomic.h"
+#include "mt_copy.h"
 #include "mt_ring_idx.h"
 
 mt_status_t mt_bring_init(mt_bring_t *r, uint8_t *storage, uint32_t cap)
@@ -86,42 +87,40 @@ uint32_t mt_bring_available(mt_bring_t *r)
     return bring_consumer_sync(r);
 }
 
+/* Producer: src[0 .. first - 1] into buf[slot ..], src[first .. n - 1] into buf[0 ..]. */
+/*@ requires first <= n && n - first <= slot;
+    requires \valid(buf + (0 .. slot + first - 1)) && \valid_read(src + (0 .. n - 1));
+    requires \separated(buf + (0 .. slot + first - 1), src + (0 .. n - 1));
+    assigns buf[slot .. slot + first - 1], buf[0 .. n - first - 1];
+    ensures lo: \forall integer j; 0 <= j < first ==> buf[slot + j] == src[j];
+    ensures hi: \forall integer j; first <= j < n ==> buf[j - first] == src[j];
+*/
+static void put_bytes(uint8_t *buf, uint32_t slot, uint32_t first, const uint8_t *src, uint32_t n)
+{
+    mt_copy_bytes(buf + slot, src, first);
+    if (n > first) {
+        mt_copy_bytes(buf, src + first, n - first);
+    }
+}
+
 uint32_t mt_bring_write(mt_bring_t *r, const uint8_t *src, uint32_t len)
 {
     uint32_t free_now = bring_producer_free(r, len);
     uint32_t n = (len < free_now) ? len : free_now;
     uint32_t slot = mt_idx_slot(r->tail, r->cap);
     uint32_t first = r->cap - slot;
-    uint32_t k;
 
     if (first > n) {
         first = n;
     }
-    /*@ loop invariant 0 <= k <= first;
-        loop invariant \forall integer j; 0 <= j < k ==> r->buf[slot + j] == src[j];
-        loop assigns k, r->buf[slot .. slot + first - 1];
-        loop variant first - k;
-    */
-    for (k = 0u; k < first; k++) {
-        r->buf[slot + k] = src[k];
-    }
-    /*@ loop invariant first <= k <= n;
-        loop invariant \forall integer j; 0 <= j < first ==> r->buf[slot + j] == src[j];
-        loop invariant \forall integer j; first <= j < k ==> r->buf[j - first] == src[j];
-        loop assigns k, r->buf[0 .. n - first - 1];
-        loop variant n - k;
-    */
-    for (k = first; k < n; k++) {
-        r->buf[k - first] = src[k];
-    }
-    //@ assert done: k == n;
+    /* two segments: up to the end of the storage, then from its start (n - first <= slot) */
+    //@ assert apart: n - first <= slot;
     //@ ghost mt_idx_slot_add_lemma(r->tail, r->cap);
     /*@ assert lo: \forall integer j; 0 <= j < first ==>
             MtIdxSlot(MtIdxAdd(r->tail, j, r->cap), r->cap) == slot + j; */
     /*@ assert hi: \forall integer j; first <= j < n ==>
             MtIdxSlot(MtIdxAdd(r->tail, j, r->cap), r->cap) == j - first; */
-    /*@ assert same_lo: \forall integer j; 0 <= j < first ==>
-            r->buf[MtIdxSlot(MtIdxAdd(r->tail, j, r->cap), r->cap)] == r->buf[slot + j]; */
+    put_bytes(r->buf, slot, first, src, n);
     /*@ assert data_lo: \forall integer j; 0 <= j < first ==>
             r->buf[MtIdxSlot(MtIdxAdd(r->tail, j, r->cap), r->cap)] == src[j]; */
     /*@ assert data_hi: \forall integer j; first <= j < n ==>
@@ -183,29 +182,16 @@ static void copy_out(const mt_bring_t *r, uint8_t *dst, uint32_t n)
 {
     uint32_t slot = mt_idx_slot(r->head, r->cap);
     uint32_t first = r->cap - slot;
-    uint32_t k;
 
     if (first > n) {
         first = n;
     }
-    /*@ loop invariant 0 <= k <= first;
-        loop invariant \forall integer j; 0 <= j < k ==> dst[j] == r->buf[slot + j];
-        loop assigns k, dst[0 .. first - 1];
-        loop variant first - k;
-    */
-    for (k = 0u; k < first; k++) {
-        dst[k] = r->buf[slot + k];
+    mt_copy_bytes(dst, r->buf + slot, first);
+    if (n > first) {
+        mt_copy_bytes(dst + first, r->buf, n - first);
     }
-    /*@ loop invariant first <= k <= n;
-        loop invariant \forall integer j; 0 <= j < first ==> dst[j] == r->buf[slot + j];
-        loop invariant \forall integer j; first <= j < k ==> dst[j] == r->buf[j - first];
-        loop assigns k, dst[first .. n - 1];
-        loop variant n - k;
-    */
-    for (k = first; k < n; k++) {
-        dst[k] = r->buf[k - first];
-    }
-    //@ assert done: k == n;
+    //@ assert seg_lo: \forall integer j; 0 <= j < first ==> dst[j] == r->buf[slot + j];
+    //@ assert seg_hi: \forall integer j; first <= j < n ==> dst[j] == r->buf[j - first];
     //@ ghost mt_idx_slot_add_lemma(r->head, r->cap);
     /*@ assert lo: \forall integer j; 0 <= j < first ==>
             MtIdxSlot(MtIdxAdd(r->head, j, r->cap), r->cap) == slot + j; */
