@@ -11,10 +11,11 @@
 # Results go to $(BUILD)/check/<module>/. `make prove` remains the run of record: this target is
 # for working on one module. The table in README.md ("Modules") lists the same mapping.
 
-CHECK_MODULES := ring objring sem proc sched time status bus wq mission
+CHECK_MODULES := ring objring wordring sem proc sched time status bus wq mission
 
 CHECK_TEST_ring    := ByteRing*
 CHECK_TEST_objring := ObjRing*
+CHECK_TEST_wordring := WordRing*
 CHECK_TEST_sem     := Sem*
 CHECK_TEST_proc    := Proc*
 CHECK_TEST_sched   := Sched*
@@ -26,6 +27,7 @@ CHECK_TEST_mission := Mission.*:MissionCheck.*:MissionState.*:MissionStatus.*:Mi
 
 CHECK_CBMC_ring    := mt_bring_
 CHECK_CBMC_objring := mt_oring_
+CHECK_CBMC_wordring := mt_wring_
 CHECK_CBMC_sem     := mt_sem_
 CHECK_CBMC_proc    := mt_proc_
 CHECK_CBMC_sched   := mt_sched_
@@ -35,9 +37,12 @@ CHECK_CBMC_bus     := mt_topic_ mt_sub_
 CHECK_CBMC_wq      := mt_wq_ mt_work_
 CHECK_CBMC_mission := mt_mission_
 
-# Ring models both rings (its configurations name the byte or the object ring).
+# Ring models both rings (its configurations name the byte or the object ring); the word ring
+# follows the same protocol (own index written with release, the other's cached and re-read
+# with acquire) with slot indices instead of mirror ones, which WP and CBMC check.
 CHECK_TLA_ring     := Ring
 CHECK_TLA_objring  := Ring
+CHECK_TLA_wordring := Ring
 CHECK_TLA_sem      := Sem
 CHECK_TLA_proc     := Proc
 CHECK_TLA_sched    := Sched

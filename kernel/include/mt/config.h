@@ -34,6 +34,12 @@
 #define MT_CFG_CACHE_LINE 64u
 #endif
 
+/** Capacity in words of every word ring (mt/wordring.h): compile-time, so its index
+ *  arithmetic folds to constants. Each ring keeps MT_CFG_WRING_CAP + 1 words. */
+#if !defined(MT_CFG_WRING_CAP)
+#define MT_CFG_WRING_CAP 256u
+#endif
+
 /** Capacity of the mission command list, home (index 0) included (ArduPilot:
  *  storage-dependent, 724 on a 16 KiB FRAM). Indices are 16-bit; the mission
  *  module keeps 39 bytes of RAM per command (see mt/mission.h). */
@@ -94,6 +100,9 @@
 #if (MT_CFG_CACHE_LINE != 0u) && (MT_CFG_CACHE_LINE != 32u) && (MT_CFG_CACHE_LINE != 64u) && \
     (MT_CFG_CACHE_LINE != 128u)
 #error "MT_CFG_CACHE_LINE must be 0, 32, 64 or 128"
+#endif
+#if (MT_CFG_WRING_CAP < 1u) || (MT_CFG_WRING_CAP > 0x1000000u)
+#error "MT_CFG_WRING_CAP must be in [1, 2^24]"
 #endif
 
 #if (MT_CFG_MISSION_MAX_CMDS < 2u) || (MT_CFG_MISSION_MAX_CMDS > 32766u)

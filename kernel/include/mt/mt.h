@@ -17,6 +17,7 @@
 #include "mt/sem.h"
 #include "mt/status.h"
 #include "mt/time.h"
+#include "mt/wordring.h"
 #include "mt/wq.h"
 #include "mt/wq_timer.h"
 #include "mt_port.h"
