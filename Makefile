@@ -66,6 +66,7 @@ help:
 	@echo "  make fw-gcs CHIBIOS=/path [FW_GCS_PORT=5760]   the firmware for your ground station (TCP)"
 	@echo "  make demo            run a task table on the host port and print its statistics"
 	@echo "  make bench           benchmarks side by side with boost and ArduPilot-style references"
+	@echo "  make bench-check     the exact bench targets (instruction counts, sizes); exit 1 on a miss"
 
 # ---------------------------------------------------------------- host builds
 # $(call host_lib,NAME,CC,EXTRA_CFLAGS)

@@ -5,6 +5,8 @@
 #   make bench            toolchain check, build, run everything, print one table,
 #                         write $(BUILD)/bench/results.json (exit 0 unless the
 #                         harness itself breaks; targets are reported, not enforced)
+#   make bench-check      the exact target lines only (instruction counts and sizes, P1 P2
+#                         P5-P9 of bench/README.md): exit 1 when one is missed
 #   make bench-build      build the bench programs only
 #
 # Environment: BENCH_ITEMS (throughput items per variant and round, default 1e8),
@@ -16,7 +18,8 @@
 BUILD     ?= build
 BENCH_OUT := $(BUILD)/bench
 BENCH_OPT := -O2 -g
-BENCH_INC := -Ikernel/include -Ikernel/port -Ikernel/spec -Ihal_posix -Ibench/src
+# the word ring's compile-time capacity, the same as every peer's (bench_ring.cpp checks it)
+BENCH_INC := -Ikernel/include -Ikernel/port -Ikernel/spec -Ihal_posix -Ibench/src -DMT_CFG_WRING_CAP=4096u
 BENCH_CC  := gcc
 BENCH_CXX := g++
 BENCH_CSTD   := -std=gnu11 -Wall -Wextra
@@ -76,7 +79,7 @@ $(BENCH_OUT)/kernel_posix: $(BENCH_OUT)/obj/def/bench/bench_kernel_posix.o $(BEN
 BENCH_BINS := $(BENCH_OUT)/bench_ring $(BENCH_OUT)/kernel_stub $(BENCH_OUT)/kernel_stub255 \
               $(BENCH_OUT)/kernel_posix
 
-.PHONY: bench bench-build
+.PHONY: bench bench-check bench-build
 bench-build: $(BENCH_BINS)
 
 bench:
@@ -85,3 +88,9 @@ bench:
 	    echo "bench: Cortex-M4 toolchain not available; code-size rows will be skipped"
 	@$(MAKE) --no-print-directory -j$$(nproc 2>/dev/null || echo 2) BUILD=$(BUILD) bench-build
 	@python3 bench/run.py --build $(BUILD)
+
+bench-check:
+	@tools/bootstrap.sh bench
+	@tools/bootstrap.sh cross
+	@$(MAKE) --no-print-directory -j$$(nproc 2>/dev/null || echo 2) BUILD=$(BUILD) bench-build
+	@python3 bench/run.py --build $(BUILD) --check

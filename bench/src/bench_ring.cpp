@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 //
-// bench_ring: SPSC rings. Metronome's object ring (elem 4) and byte ring
-// against boost::lockfree::spsc_queue and the ArduPilot-style reference
-// (ref_ap_ring.hpp), all compiled with the same flags into this one binary.
+// bench_ring: SPSC rings. Metronome's object ring (elem 4), word ring (its fast path for
+// 32-bit objects, compile-time capacity: MT_CFG_WRING_CAP=4096 from bench.mk) and byte ring
+// against boost::lockfree::spsc_queue and the ArduPilot-style reference (ref_ap_ring.hpp), all
+// compiled with the same flags into this one binary.
 //
 //   bench_ring cg <entry> <n>                 run one callgrind entry (see ENTRIES)
 //   bench_ring tput <items> <rounds> [v,...]  two-thread throughput, interleaved rounds
@@ -20,6 +21,7 @@
 extern "C" {
 #include "mt/objring.h"
 #include "mt/ring.h"
+#include "mt/wordring.h"
 }
 #include "ref_ap_ring.hpp"
 
@@ -33,6 +35,8 @@ alignas(64) uint8_t g_oring_store[MT_ORING_STORAGE_BYTES(4, kCap)];
 alignas(64) mt_oring_t g_oring;
 alignas(64) uint8_t g_bring_store[kCap];
 alignas(64) mt_bring_t g_bring;
+alignas(64) mt_wring_t g_wring;
+static_assert(MT_CFG_WRING_CAP == kCap, "bench.mk builds the word ring with the peers' capacity");
 
 using BoostQ = boost::lockfree::spsc_queue<uint32_t, boost::lockfree::capacity<kCap>>;
 using BoostQrt = boost::lockfree::spsc_queue<uint32_t>;
@@ -50,6 +54,7 @@ Rings *g_r;
 
 void init_rings()
 {
+    mt_wring_init(&g_wring);
     if (mt_oring_init(&g_oring, g_oring_store, 4u, kCap) != MT_OK ||
         mt_bring_init(&g_bring, g_bring_store, kCap) != MT_OK) {
         std::fprintf(stderr, "bench_ring: ring init failed\n");
@@ -63,6 +68,11 @@ struct MtOps {
     static bool push(uint32_t v) { return mt_oring_push(&g_oring, &v) == MT_OK; }
     static bool pop(uint32_t &v) { return mt_oring_pop(&g_oring, &v) == MT_OK; }
     static void reset() { (void)mt_oring_init(&g_oring, g_oring_store, 4u, kCap); }
+};
+struct MtWOps {
+    static bool push(uint32_t v) { return mt_wring_push(&g_wring, v) == MT_OK; }
+    static bool pop(uint32_t &v) { return mt_wring_pop(&g_wring, &v) == MT_OK; }
+    static void reset() { mt_wring_init(&g_wring); }
 };
 struct BoostOps {
     static bool push(uint32_t v) { return g_r->boost_q.push(v); }
@@ -125,6 +135,7 @@ BENCH_EXTERN_C NOINL uint64_t bench_ring_base(uint64_t items)
     return sum;
 }
 BENCH_EXTERN_C NOINL uint64_t bench_ring_mt(uint64_t items) { return st_push_pop<MtOps>(items); }
+BENCH_EXTERN_C NOINL uint64_t bench_ring_mtw(uint64_t items) { return st_push_pop<MtWOps>(items); }
 BENCH_EXTERN_C NOINL uint64_t bench_ring_boost(uint64_t items) { return st_push_pop<BoostOps>(items); }
 BENCH_EXTERN_C NOINL uint64_t bench_ring_boostrt(uint64_t items) { return st_push_pop<BoostRtOps>(items); }
 BENCH_EXTERN_C NOINL uint64_t bench_ring_ap(uint64_t items) { return st_push_pop<ApOps>(items); }
@@ -174,7 +185,7 @@ struct Entry {
 
 const Entry kEntries[] = {
     {"bench_ring_base", bench_ring_base, 1},       {"bench_ring_mt", bench_ring_mt, 1},
-    {"bench_ring_boost", bench_ring_boost, 1},     {"bench_ring_boostrt", bench_ring_boostrt, 1},
+    {"bench_ring_mtw", bench_ring_mtw, 1},         {"bench_ring_boost", bench_ring_boost, 1},     {"bench_ring_boostrt", bench_ring_boostrt, 1},
     {"bench_ring_ap", bench_ring_ap, 1},           {"bench_bytes_mt_1", bench_bytes_mt_1, 1},
     {"bench_bytes_boost_1", bench_bytes_boost_1, 1}, {"bench_bytes_ap_1", bench_bytes_ap_1, 1},
     {"bench_bytes_mt_64", bench_bytes_mt_64, 1},   {"bench_bytes_boost_64", bench_bytes_boost_64, 1},
@@ -513,6 +524,7 @@ int main(int argc, char **argv)
         return rounds_loop("tput", vars, rounds, items, 4 * kTputChunk * ap_div, budget,
                            [&](const std::string &v, uint64_t n, int *pinned) -> Meas {
             if (v == "mt") return tput_once<MtOps>(n, kTputChunk, pinned);
+            if (v == "mtw") return tput_once<MtWOps>(n, kTputChunk, pinned);
             if (v == "boost") return tput_once<BoostOps>(n, kTputChunk, pinned);
             if (v == "boostrt") return tput_once<BoostRtOps>(n, kTputChunk, pinned);
             if (v == "ap") return tput_once<ApOps>(n / ap_div, kTputChunk / ap_div, pinned);
