@@ -89,24 +89,28 @@ mt_status_t mt_proc_register(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg)
     return st;
 }
 
-/* Time and count one call of entry i. */
+/* Call and count entry i, timed from t0 (the end of the previous call, or the start of the
+ * round) to the clock reading after it, which it returns: one reading per proc. */
 /*@ requires MtProcSetInv(p);
     requires 0 <= i < p->count;
+    requires t0 <= MtPortNow;
     assigns p->procs[i].calls, p->procs[i].max_us, p->procs[i].total_us, MtPortNow,
             MtCalls[MT_CALL_PROC(i)];
     ensures MtProcSetInv(p);
     ensures MtPortNow >= \old(MtPortNow);
+    ensures read: \result == MtPortNow;
     ensures called: MtCalls[MT_CALL_PROC(i)] == MtCount64(\old(MtCalls[MT_CALL_PROC(i)]), 1);
     ensures p->procs[i].calls == (\old(p->procs[i].calls) < 0xFFFFFFFF ? \old(p->procs[i].calls) + 1 : \old(p->procs[i].calls));
 */
-static void call_one(mt_proc_set_t *p, uint32_t i)
+static uint64_t call_one(mt_proc_set_t *p, uint32_t i, uint64_t t0)
 {
     mt_proc_t *e = &p->procs[i];
-    uint64_t t0 = mt_port_now_us();
+    uint64_t t1;
     uint64_t dt;
 
     mt_invoke(e->fn, e->arg, MT_CALL_PROC(i));
-    dt = mt_port_now_us() - t0;
+    t1 = mt_port_now_us();
+    dt = t1 - t0;
     if (e->calls < 0xFFFFFFFFu) {
         e->calls++;
     }
@@ -114,6 +118,7 @@ static void call_one(mt_proc_set_t *p, uint32_t i)
         e->max_us = (dt > 0xFFFFFFFFu) ? 0xFFFFFFFFu : (uint32_t)dt;
     }
     e->total_us = (e->total_us <= (UINT64_MAX - dt)) ? (e->total_us + dt) : UINT64_MAX;
+    return t1;
 }
 
 mt_status_t mt_proc_dispatch(mt_proc_set_t *p)
@@ -121,6 +126,7 @@ mt_status_t mt_proc_dispatch(mt_proc_set_t *p)
     uint32_t n;
     uint32_t i;
     uint64_t t0;
+    uint64_t t;
     uint64_t dt;
 
     if (p->running != 0u) {
@@ -132,9 +138,10 @@ mt_status_t mt_proc_dispatch(mt_proc_set_t *p)
     p->running = 1u;
     n = mt_load_acquire_u32(&p->count);
     t0 = mt_port_now_us();
+    t = t0;
     /*@ loop invariant 0 <= i <= n;
         loop invariant MtProcSetInv(p) && p->running == 1 && p->count == n;
-        loop invariant time: MtPortNow >= t0;
+        loop invariant time: t0 <= t <= MtPortNow;
         loop invariant \forall integer j; 0 <= j < i ==>
             p->procs[j].calls == (\at(p->procs[j].calls, LoopEntry) < 0xFFFFFFFF ? \at(p->procs[j].calls, LoopEntry) + 1 : \at(p->procs[j].calls, LoopEntry));
         loop invariant \forall integer j; i <= j < MT_CFG_PROC_MAX ==>
@@ -143,15 +150,16 @@ mt_status_t mt_proc_dispatch(mt_proc_set_t *p)
             MtCalls[MT_CALL_PROC(j)] == MtCount64(\at(MtCalls[MT_CALL_PROC(j)], LoopEntry), 1);
         loop invariant uncalled: \forall integer j; i <= j < MT_CFG_PROC_MAX ==>
             MtCalls[MT_CALL_PROC(j)] == \at(MtCalls[MT_CALL_PROC(j)], LoopEntry);
-        loop assigns i, p->procs[0 .. MT_CFG_PROC_MAX - 1].calls, p->procs[0 .. MT_CFG_PROC_MAX - 1].max_us,
+        loop assigns i, t, p->procs[0 .. MT_CFG_PROC_MAX - 1].calls, p->procs[0 .. MT_CFG_PROC_MAX - 1].max_us,
                      p->procs[0 .. MT_CFG_PROC_MAX - 1].total_us, MtPortNow,
                      MtCalls[MT_CALL_PROC(0) .. MT_CALL_PROC(MT_CFG_PROC_MAX - 1)];
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {
-        call_one(p, i);
+        t = call_one(p, i, t);
     }
-    dt = mt_port_now_us() - t0;
+    /* the round: from the first reading to the last (the end of the last proc) */
+    dt = t - t0;
     if (dt > (uint64_t)p->max_round_us) {
         p->max_round_us = (dt > 0xFFFFFFFFu) ? 0xFFFFFFFFu : (uint32_t)dt;
     }

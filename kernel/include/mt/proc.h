@@ -118,7 +118,8 @@ mt_status_t mt_proc_register_i(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg);
 */
 mt_status_t mt_proc_register(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg);
 
-/** Call every published proc once, in registration order, timing each call.
+/** Call every published proc once, in registration order, timing each call (one clock
+ *  reading per proc: a call's time runs from the end of the previous one).
  *  [dispatching thread only]
  *  @retval MT_OK
  *  @retval MT_E_BUSY called from inside a proc of the same set (refused, counted). */
