@@ -16,7 +16,9 @@
  * - Producer: push only; consumer: pop and available. Each side writes only its own index and
  *   caches the other's, re-reading it (acquire) only when the cached view says full or empty.
  *   The word is stored before the index is published (release), and read before the slot is
- *   released. The index protocol is tla/Ring.tla's (shared with ring and objring).
+ *   released. This is the protocol tla/Ring.tla checks for ring and objring, there with
+ *   mirror indices; the slot-index form here is checked by WP and CBMC against sequential
+ *   contracts (assumption C2), not by a model of its own.
  */
 #ifndef MT_WORDRING_H
 #define MT_WORDRING_H
