@@ -289,6 +289,89 @@ def t_fault_injection(S):
         check(r.tasks[name]["runs"] == r.tasks[name]["expect"], "fast task %s missed a tick" % name)
 
 
+def timeline_slices(ev, tid):
+    """The X events of one track as a forest: each slice with its parent's name (None at the top).
+    Fails on a partial overlap, which Perfetto's thread tracks cannot show (slices nest or are
+    disjoint)."""
+    xs = sorted((e for e in ev if e["ph"] == "X" and e["tid"] == tid), key=lambda e: (e["ts"], -e["dur"]))
+    stack, out = [], []
+    for e in xs:
+        end = e["ts"] + e["dur"]
+        # a zero-length slice contains nothing; one that ends at e's start contains e only
+        # when e has no length either
+        while stack and (stack[-1]["dur"] == 0 or stack[-1]["ts"] + stack[-1]["dur"] < e["ts"] or
+                         (stack[-1]["ts"] + stack[-1]["dur"] == e["ts"] and e["dur"] > 0)):
+            stack.pop()
+        if stack:
+            top_end = stack[-1]["ts"] + stack[-1]["dur"]
+            check(end <= top_end, "track %d: %s [%d, %d] overlaps %s [%d, %d] partly" % (
+                tid, e["name"], e["ts"], end, stack[-1]["name"], stack[-1]["ts"], top_end))
+        out.append((e, stack[-1]["name"] if stack else None))
+        stack.append(e)
+    return out
+
+
+def t_timeline(S):
+    """--timeline: a Chrome trace-event file whose events agree with the flight summary, event by
+    event where the summary allows (each task's runs, min/max/mean run time, overruns, slips, budget
+    skips; the proc sets' dispatches; the work queue's runs)."""
+    path = os.path.join(S.tmp, "timeline.json")
+    args = ["--quiet", "--timeline", path, "--overrun", "gcs_update:2200:20:0.5",
+            os.path.join(MISSIONS, "plain.waypoints")]
+    r = Run(S.sitl, args)
+    check(r.rc == 0 and r.line("mission: COMPLETE") is not None, "flight not complete")
+    plain = S.fly(os.path.join(MISSIONS, "plain.waypoints"), "--overrun", "gcs_update:2200:20:0.5")
+    strip = lambda out: [l for l in out.splitlines() if not l.startswith(("timeline file:", "sitl: "))]
+    check(strip(r.out) == strip(plain.out), "the timeline changed the run")
+    with open(path) as f:
+        doc = json.load(f)
+    ev = doc["traceEvents"]
+    threads = {e["tid"]: e["args"]["name"] for e in ev if e["ph"] == "M" and e["name"] == "thread_name"}
+    check(sorted(threads) == [1, 2, 3, 4] and threads[4] == "work queue veh_lp", "tracks: %s" % threads)
+    for e in ev:
+        check(e["ph"] in ("M", "X", "i") and e["pid"] == 1 and e["tid"] in threads and
+              isinstance(e["ts"], int) and e["ts"] >= 0 and isinstance(e["name"], str), "event %r" % e)
+        check(e["ph"] != "X" or (isinstance(e["dur"], int) and e["dur"] >= 0), "slice %r" % e)
+        check(e["ph"] != "i" or (e["s"] == "t" and e["args"]["task"] in r.tasks), "instant %r" % e)
+    main = timeline_slices(ev, 1)
+    ticks = [e for e, parent in main if e["name"].startswith("tick ")]
+    check(len(ticks) == r.value(r"scheduler: loop \d+ Hz, \d+ tasks, (\d+) ticks") and
+          all(parent is None for e, parent in main if e["name"].startswith("tick ")), "tick slices")
+    runs = {}
+    for e, parent in main:
+        if not e["name"].startswith("tick "):
+            check(parent is not None and parent.startswith("tick "), "%s at %d outside a tick" % (e["name"], e["ts"]))
+            runs.setdefault(e["name"], []).append(e)
+    check(sorted(runs) == sorted(r.tasks), "tasks with slices: %s" % sorted(runs))
+    inst = [e for e in ev if e["ph"] == "i"]
+    ends = {(e["name"], e["ts"] + e["dur"]) for es in runs.values() for e in es if e["dur"] > e["args"]["allowed_us"]}
+    starts = {(e["name"], e["ts"]) for es in runs.values() for e in es}
+    for name, t in r.tasks.items():
+        d = [e["dur"] for e in runs[name]]
+        check(len(d) == t["runs"] and min(d) == t["min"] and max(d) == t["max"] and sum(d) // len(d) == t["mean"],
+              "%s: %d slices (min %d max %d mean %d) against runs %d (min %d max %d mean %d)" % (
+                  name, len(d), min(d), max(d), sum(d) // len(d), t["runs"], t["min"], t["max"], t["mean"]))
+        over = [e for e in inst if e["name"] == "overrun" and e["args"]["task"] == name]
+        at_end = sum((name, e["ts"]) in ends for e in over)
+        check(len(over) == t["overrun"] and at_end == len(over),
+              "%s: %d overrun events (%d at the end of a run longer than its allowance) against %d" % (
+                  name, len(over), at_end, t["overrun"]))
+        slip = [e for e in inst if e["name"] == "slip" and e["args"]["task"] == name]
+        check(sum(e["args"]["missed"] for e in slip) == t["slips"] and all((name, e["ts"]) in starts for e in slip),
+              "%s: slip events missing %d against %d" % (name, sum(e["args"]["missed"] for e in slip), t["slips"]))
+        skip = [e for e in inst if e["name"] == "budget skip" and e["args"]["task"] == name]
+        check(len(skip) == t["skips"], "%s: %d budget skip events against %d" % (name, len(skip), t["skips"]))
+    check(r.value(r"overruns: (\d+),") > 0 and r.value(r"slips: (\d+),") > 0 and
+          r.value(r"budget skips: (\d+),") > 0, "the run has overruns, slips and budget skips to show")
+    timer, io, work = (timeline_slices(ev, t) for t in (2, 3, 4))
+    check(len(timer) == r.value(r"timer procs: (\d+) dispatches") and all(p is None for _, p in timer),
+          "timer dispatch slices %d" % len(timer))
+    check(len(io) == r.value(r"io procs: (\d+) dispatches"), "io dispatch slices %d" % len(io))
+    check(len(work) == r.value(r"work queue veh_lp: (\d+) runs") and
+          sum(e["name"] == "battery" for e, _ in work) == r.value(r"battery item: (\d+) runs"),
+          "work item slices %d" % len(work))
+
+
 def t_bad_mission(S):
     for f, line, what in (("tests/missions/bad/missing_field.waypoints", None, "field"),
                           ("tests/missions/bad/jump_target.waypoints", None, "MT_E_MISSION_JUMP")):
@@ -1346,6 +1429,7 @@ TESTS = [
     ("sitl: built-in mission = builtin.waypoints", t_builtin_matches_file),
     ("sitl: deterministic simulated time", t_deterministic),
     ("sitl: fault injection (gcs_update overruns)", t_fault_injection),
+    ("sitl: --timeline agrees with the flight summary, event by event", t_timeline),
     ("sitl: malformed missions rejected, vehicle stays disarmed", t_bad_mission),
     ("sitl: unreadable mission file", t_unreadable_mission),
     ("sitl: agreement with sched_check (nominal and overloaded)", t_agreement),

@@ -119,6 +119,9 @@ mt_proc_set_t *veh_io_procs(void);
  *  time. Its interval timer is one of the vehicle's timer procs. */
 mt_wq_t *veh_work_queue(void);
 
+/** The name of the work item in slot of veh_work_queue() ("battery"), or "unknown". */
+const char *veh_work_item_name(uint32_t slot);
+
 /** The ground-station link's byte rings (MAVLink 2, link.c): the deployment writes what it
  *  receives into veh_link_rx() and sends what it reads from veh_link_tx(), from one thread
  *  per ring side (single producer, single consumer; the vehicle's side is the main loop). */

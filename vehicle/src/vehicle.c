@@ -294,6 +294,12 @@ mt_wq_t *veh_work_queue(void)
     return &g_veh.wq;
 }
 
+const char *veh_work_item_name(uint32_t slot)
+{
+    const mt_work_t *w = &g_veh.battery_work;
+    return ((w->wq == &g_veh.wq) && (w->slot == slot)) ? "battery" : "unknown";
+}
+
 void veh_timer_spec(uint32_t *period_us, uint32_t *cost_min_us, uint32_t *cost_max_us)
 {
     *period_us = VEH_TIMER_PERIOD_US;

@@ -32,6 +32,10 @@
  *                        ticks: "S t" sample, "R due cost" timer round, "E task cost"
  *                        task run, "K tick end runmask skipmask" end of the scan
  *                        (tests/vehicle: the Z3 encoding against the kernel's decisions)
+ *     --timeline FILE    simulated time: a Chrome trace-event JSON file, one track per thread
+ *                        (main loop: ticks, task runs, slips, overruns, budget skips; timer
+ *                        and IO proc dispatches; work items), for Perfetto's UI or
+ *                        chrome://tracing (timeline.h)
  *
  * Simulated time (default): one thread; time moves only when a task spends its
  * simulated cost (a pseudo-random time in the range of tasks.def, mostly near its low
@@ -63,6 +67,7 @@
 #include "report.h"
 #include "simplat.h"
 #include "startup.h"
+#include "timeline.h"
 #include "veh.h"
 #include "wpl.h"
 
@@ -299,10 +304,12 @@ static void sim_set_at_least(uint64_t t)
 /* The timer thread's round: all timer procs, then their cost. */
 static void timer_round(sitl_t *s)
 {
+    uint64_t t0 = mt_port_now_us();
     uint32_t c;
     (void)mt_proc_dispatch(veh_timer_procs());
     c = cost(s, s->timer_cmin, s->timer_cmax);
     mt_posix_sim_advance(c);
+    tl_slice(TL_TIMER, "timer procs", t0, mt_port_now_us() - t0, "procs", veh_timer_procs()->count);
     if (s->trace != NULL) {
         fprintf(s->trace, "R %llu %u\n", (unsigned long long)s->next_timer, (unsigned)c);
     }
@@ -344,7 +351,29 @@ static void cb_task_work(void *ctx, uint32_t task, uint32_t cmin, uint32_t cmax)
     if (s->trace != NULL) {
         fprintf(s->trace, "E %u %llu\n", (unsigned)task, (unsigned long long)us);
     }
+    tl_task_begin(veh_sched());
     sim_spend(s, us);
+    tl_task_end(veh_sched(), mt_port_now_us());
+}
+
+/* The IO procs and the work queue's pending items, run in the loop's idle time. */
+static void sim_idle(void)
+{
+    mt_wq_t *q = veh_work_queue();
+    uint64_t t0 = mt_port_now_us();
+    uint32_t n;
+
+    (void)mt_proc_dispatch(veh_io_procs());
+    tl_slice(TL_IO, "io procs", t0, mt_port_now_us() - t0, "procs", veh_io_procs()->count);
+    /* mt_wq_run_pending's loop, one item at a time so that each is named */
+    for (n = 0u; n < MT_CFG_WQ_MAX_ITEMS; n++) {
+        uint32_t slot = (q->count > 0u) ? q->order[q->head] : MT_WQ_NONE;
+        t0 = mt_port_now_us();
+        if (mt_wq_run_once(q) != MT_OK) {
+            break;
+        }
+        tl_slice(TL_WORK, veh_work_item_name(slot), t0, mt_port_now_us() - t0, "slot", slot);
+    }
 }
 
 /* The main loop's sample wait in simulated time: the port metronome's grid (a late
@@ -366,12 +395,12 @@ static uint64_t sim_wait(void *ctx)
     }
     while (s->next_timer < next) {
         sim_set_at_least(s->next_timer);
-        (void)mt_proc_dispatch(veh_io_procs());
-        (void)mt_wq_run_pending(veh_work_queue(), MT_CFG_WQ_MAX_ITEMS);
+        sim_idle();
         timer_round(s);
     }
     sim_set_at_least(next);
     s->next_sample = next;
+    tl_tick_begin(veh_sched(), next);
     if (s->trace != NULL) {
         fprintf(s->trace, "S %llu\n", (unsigned long long)next);
     }
@@ -523,7 +552,8 @@ static int usage(void)
             "usage: metronome-sitl [--builtin] [--realtime] [--seed N] [--timeout S] [--ticks N]\n"
             "                      [--log FILE] [--event T:stop|resume|land]...\n"
             "                      [--overrun TASK:US[:START[:DURATION]]] [--wind N,E] [--quiet]\n"
-            "                      [--trace FILE] [--mavlink udp:ADDR:PORT] [--speedup N]\n"
+            "                      [--trace FILE] [--timeline FILE] [--mavlink udp:ADDR:PORT]\n"
+            "                      [--speedup N]\n"
             "                      [--signing-key HEX64]\n"
             "                      [MISSION.waypoints | MISSION.plan]\n");
     return 2;
@@ -635,6 +665,7 @@ int main(int argc, char **argv)
     const char *mission_path = NULL;
     const char *log_path = NULL;
     const char *trace_path = NULL;
+    const char *timeline_path = NULL;
     bool builtin = false;
     bool quiet = false;
     uint64_t seed = 1u;
@@ -679,6 +710,9 @@ int main(int argc, char **argv)
             i++;
         } else if ((strcmp(a, "--trace") == 0) && (val != NULL)) {
             trace_path = val;
+            i++;
+        } else if ((strcmp(a, "--timeline") == 0) && (val != NULL)) {
+            timeline_path = val;
             i++;
         } else if ((strcmp(a, "--log") == 0) && (val != NULL)) {
             log_path = val;
@@ -751,6 +785,10 @@ int main(int argc, char **argv)
             fprintf(stderr, "sitl: --trace needs simulated time and a writable file\n");
             return 2;
         }
+    }
+    if ((timeline_path != NULL) && !g.sim) {
+        fprintf(stderr, "sitl: --timeline needs simulated time\n");
+        return usage();
     }
     if (g.sim) {
         mt_posix_sim_enable(SIM_START_US);
@@ -846,12 +884,17 @@ int main(int argc, char **argv)
         }
     }
 
+    if ((timeline_path != NULL) && !tl_open(timeline_path, veh_work_queue())) {
+        fprintf(stderr, "sitl: cannot write %s\n", timeline_path);
+        return 2;
+    }
     w0 = wall_s();
     for (;;) {
         if (g.trace != NULL) {
             trace_tick_begin();
         }
         veh_loop_once(simplat_wait, &g.world);
+        tl_tick_end(veh_sched(), mt_port_now_us());
         if (g.trace != NULL) {
             trace_tick_end(max_ticks);
         }
@@ -873,7 +916,14 @@ int main(int argc, char **argv)
         mt_posix_wq_stop(&wq_thr);
     }
     /* drain what is left of the log (the IO thread is stopped: this is its consumer now) */
-    veh_run_drain();
+    {
+        uint64_t d0 = veh_io_procs()->dispatches;
+        uint64_t t0 = mt_port_now_us();
+        veh_run_drain();
+        for (; d0 < veh_io_procs()->dispatches; d0++) {
+            tl_slice(TL_IO, "io procs", t0, mt_port_now_us() - t0, "procs", veh_io_procs()->count);
+        }
+    }
     veh_run_summary(&g.run, &g.world);
     if (g.overrun_task >= 0) {
         veh_printf("fault injection: %llu runs of %s overran by %u us\n",
@@ -890,6 +940,13 @@ int main(int argc, char **argv)
     if (g.trace != NULL) {
         fclose(g.trace);
         g.trace = NULL;
+    }
+    if (timeline_path != NULL) {
+        if (!tl_close()) {
+            fprintf(stderr, "sitl: error writing %s\n", timeline_path);
+            return 2;
+        }
+        veh_printf("timeline file: %s (Perfetto UI or chrome://tracing)\n", timeline_path);
     }
     if (g.log != NULL) {
         if ((fclose(g.log) != 0) || g.log_error) {
