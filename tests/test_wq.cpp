@@ -307,6 +307,46 @@ TEST_F(WqSim, RunPendingStopsAtItsLimit)
     EXPECT_EQ(r.run(), 1u);
 }
 
+// A work item that calls mt_wq_run_pending on its own queue while it runs.
+struct NestedPending {
+    mt_wq_t *q;
+    uint32_t max;
+    uint32_t got;
+};
+
+void nested_pending(void *arg)
+{
+    auto *n = static_cast<NestedPending *>(arg);
+    n->got = mt_wq_run_pending(n->q, n->max);
+}
+
+TEST_F(WqSim, RunPendingDuringARunRunsNoneAndCountsTheRefusal)
+{
+    Rig r(1u);
+    NestedPending a{r.wq(), 5u, 99u};
+    NestedPending zero{r.wq(), 0u, 99u};
+    mt_work_t wa;
+    mt_work_t wz;
+    mt_work_init(&wa, nested_pending, &a);
+    mt_work_init(&wz, nested_pending, &zero);
+    ASSERT_EQ(mt_wq_attach(r.wq(), &wa), MT_OK);
+    ASSERT_EQ(mt_wq_attach(r.wq(), &wz), MT_OK);
+    EXPECT_EQ(mt_work_schedule(&wa), MT_OK);
+    EXPECT_EQ(mt_work_schedule(&r.w[0]), MT_OK);
+    EXPECT_EQ(mt_wq_run_once(r.wq()), MT_OK); // wa: its run_pending is refused
+    EXPECT_EQ(a.got, 0u);
+    EXPECT_EQ(r.p[0].runs, 0u);
+    EXPECT_EQ(r.qreport().refused, 1u);
+    EXPECT_EQ(mt_work_schedule(&wz), MT_OK);
+    EXPECT_EQ(r.run(1u), 1u); // the probe (queued before wz)
+    EXPECT_EQ(r.p[0].runs, 1u);
+    EXPECT_EQ(r.run(), 1u); // wz: max 0 runs nothing and is not a refusal
+    EXPECT_EQ(zero.got, 0u);
+    EXPECT_EQ(r.qreport().refused, 1u);
+    EXPECT_EQ(r.qreport().runs, 3u);
+    EXPECT_EQ(r.qreport().depth, 0u);
+}
+
 // ---------------------------------------------------------------- timers
 
 TEST_F(WqSim, DelayedItemFiresOnceAtItsDeadline)

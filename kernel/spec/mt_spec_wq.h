@@ -86,11 +86,14 @@
             \at(MtCalls[MT_CALL_WORK(k)], L2) == \at(MtCalls[MT_CALL_WORK(k)], L1);
 */
 
-/* The queue's saturating counters (one more, stopping at the type's maximum) and a timer
+/* The queue's saturating counters (one more, or n more, stopping at the type's maximum) and a timer
  * deadline d microseconds after now (stopping at the end of 64-bit time). */
 /*@ logic integer MtWqInc32(integer x) = x < 0xFFFFFFFF ? x + 1 : 0xFFFFFFFF;
 
     logic integer MtWqInc64(integer x) = x < 0xFFFFFFFFFFFFFFFF ? x + 1 : 0xFFFFFFFFFFFFFFFF;
+
+    logic integer MtWqAdd64(integer x, integer n) =
+        x + n <= 0xFFFFFFFFFFFFFFFF ? x + n : 0xFFFFFFFFFFFFFFFF;
 
     logic integer MtWqAfter(integer now, integer d) =
         now + d <= 0xFFFFFFFFFFFFFFFF ? now + d : 0xFFFFFFFFFFFFFFFF;

@@ -333,6 +333,13 @@ uint32_t mt_wq_run_pending(mt_wq_t *q, uint32_t max)
 
     /*@ loop invariant bound: 0 <= n <= max;
         loop invariant inv: MtWqInv(q) && MtLocked == 0;
+        loop invariant items: MtWqItemsKept{Pre, Here}(q);
+        loop invariant first: n == 0 ==> q->running == \at(q->running, Pre) &&
+            q->refused == \at(q->refused, Pre) && q->stats.runs == \at(q->stats.runs, Pre) &&
+            MtWqNoneCalled{Pre, Here};
+        loop invariant after: n > 0 ==> q->running == MT_WQ_NONE;
+        loop invariant refused: \at(q->running, Pre) != MT_WQ_NONE ==> n == 0;
+        loop invariant ran: q->stats.runs == MtWqAdd64(\at(q->stats.runs, Pre), n);
         loop assigns n, *q, MtPortNow, MtLocked,
                      MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
         loop variant max - n;

@@ -360,14 +360,31 @@ void mt_work_notify_i(void *item);
 mt_status_t mt_wq_run_once(mt_wq_t *q);
 
 /** Run queued items until none is left or max have run (task context; for
- *  tests in simulated time and for draining at shutdown). Returns the number
- *  of items run. */
+ *  tests in simulated time and for draining at shutdown): mt_wq_run_once()
+ *  until it returns something else than MT_OK. Returns the number of items
+ *  run; fewer than max only when the queue was found empty, or when another
+ *  runner's run was in progress at the call (then none, and the refusal is
+ *  counted unless max is 0). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
     assigns *q, MtPortNow, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     ensures bounded: \result <= max;
+    ensures items_kept: MtWqItemsKept{Pre, Post}(q);
+    behavior busy:
+      assumes q->running != MT_WQ_NONE;
+      ensures none: \result == 0;
+      ensures none_called: MtWqNoneCalled{Pre, Post};
+      ensures counted: q->refused == (max > 0 ? MtWqInc32(\old(q->refused)) : \old(q->refused));
+      ensures still: q->running == \old(q->running);
+    behavior idle:
+      assumes q->running == MT_WQ_NONE;
+      ensures drained: \result < max ==> q->count == 0;
+      ensures ran_wq: q->stats.runs == MtWqAdd64(\old(q->stats.runs), \result);
+      ensures idle: q->running == MT_WQ_NONE;
+    complete behaviors;
+    disjoint behaviors;
 */
 uint32_t mt_wq_run_pending(mt_wq_t *q, uint32_t max);
 
