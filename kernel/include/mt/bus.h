@@ -208,6 +208,7 @@ typedef struct {
       ensures empty: t->gen == d->first_gen && t->published == 0 && t->nnotify == 0 &&
                      t->nrel == 0;
       ensures stats: t->publishes == 0 && t->rejected == 0 && t->notified == 0;
+      ensures storage: t->buf == (uint8_t *)storage;
     complete behaviors;
     disjoint behaviors;
 */

@@ -104,6 +104,7 @@ typedef struct {
       ensures status: \result == MT_OK;
       ensures inv: MtORingInv(r);
       ensures empty: MtORingCount(r) == 0 && r->cap == cap && r->elem == elem && r->lost == 0 && r->rejected == 0;
+      ensures storage: r->buf == (uint8_t *)storage;
     behavior bad:
       assumes elem < 1 || cap < 1 || (cap + 1) * elem > MT_ORING_BYTES_MAX;
       ensures status: \result == MT_E_INVALID;

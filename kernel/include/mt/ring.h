@@ -100,6 +100,7 @@ typedef struct {
       ensures status: \result == MT_OK;
       ensures inv: MtBRingInv(r);
       ensures empty: MtBRingCount(r) == 0 && r->cap == cap && r->buf == storage;
+      ensures unreserved: r->reserved == 0;
     behavior bad_cap:
       assumes cap < 1 || cap > MT_BRING_CAP_MAX;
       ensures status: \result == MT_E_INVALID;
