@@ -99,7 +99,8 @@ void mt_proc_set_init(mt_proc_set_t *p);
       ensures status: \result == MT_OK;
       ensures appended: p->count == \old(p->count) + 1;
       ensures entry: p->procs[\old(p->count)].fn == fn && p->procs[\old(p->count)].arg == arg;
-      ensures fresh: p->procs[\old(p->count)].calls == 0 && p->procs[\old(p->count)].max_us == 0;
+      ensures fresh: p->procs[\old(p->count)].calls == 0 && p->procs[\old(p->count)].max_us == 0 &&
+                     p->procs[\old(p->count)].total_us == 0;
     complete behaviors;
     disjoint behaviors;
 */
