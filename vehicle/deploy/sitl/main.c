@@ -361,19 +361,13 @@ static void sim_idle(void)
 {
     mt_wq_t *q = veh_work_queue();
     uint64_t t0 = mt_port_now_us();
-    uint32_t n;
 
     (void)mt_proc_dispatch(veh_io_procs());
     tl_slice(TL_IO, "io procs", t0, mt_port_now_us() - t0, "procs", veh_io_procs()->count);
-    /* mt_wq_run_pending's loop, one item at a time so that each is named */
-    for (n = 0u; n < MT_CFG_WQ_MAX_ITEMS; n++) {
-        uint32_t slot = (q->count > 0u) ? q->order[q->head] : MT_WQ_NONE;
-        t0 = mt_port_now_us();
-        if (mt_wq_run_once(q) != MT_OK) {
-            break;
-        }
-        tl_slice(TL_WORK, veh_work_item_name(slot), t0, mt_port_now_us() - t0, "slot", slot);
-    }
+    tl_work_begin(q);
+    t0 = mt_port_now_us();
+    (void)mt_wq_run_pending(q, MT_CFG_WQ_MAX_ITEMS);
+    tl_work_end(q, t0, mt_port_now_us(), veh_work_item_name);
 }
 
 /* The main loop's sample wait in simulated time: the port metronome's grid (a late

@@ -27,9 +27,11 @@ typedef struct {
     uint64_t run_start[MT_CFG_SCHED_MAX_TASKS];
     uint64_t run_end[MT_CFG_SCHED_MAX_TASKS];
     tl_counts_t before[MT_CFG_SCHED_MAX_TASKS];
+    /* the work queue's items' run counters before a round */
+    uint64_t work_before[MT_CFG_WQ_MAX_ITEMS];
 } tl_t;
 
-static tl_t g_tl = {NULL, false, 0u, -1, 0u, 0u, false, {0u}, {0u}, {{0u, 0u, 0u}}};
+static tl_t g_tl = {NULL, false, 0u, -1, 0u, 0u, false, {0u}, {0u}, {{0u, 0u, 0u}}, {0u}};
 
 /* A JSON string (names come from tables and are plain, but nothing is taken on trust). */
 static void put_str(FILE *f, const char *s)
@@ -72,19 +74,10 @@ static void thread_name(tl_track_t track, const char *name, int sort)
 bool tl_open(const char *path, const mt_wq_t *wq)
 {
     char wq_name[64];
-    uint32_t i;
 
     g_tl.f = fopen(path, "w");
     if (g_tl.f == NULL) {
         return false;
-    }
-    g_tl.error = false;
-    g_tl.events = 0u;
-    g_tl.task = -1;
-    g_tl.in_tick = false;
-    for (i = 0u; i < MT_CFG_SCHED_MAX_TASKS; i++) {
-        g_tl.run_start[i] = 0u;
-        g_tl.run_end[i] = 0u;
     }
     (void)fputs(
         "{\"displayTimeUnit\":\"ms\",\"otherData\":{\"source\":\"metronome-sitl --timeline\","
@@ -100,9 +93,31 @@ bool tl_open(const char *path, const mt_wq_t *wq)
     return true;
 }
 
-bool tl_on(void)
+void tl_work_begin(const mt_wq_t *q)
 {
-    return g_tl.f != NULL;
+    uint32_t k;
+
+    if (g_tl.f == NULL) {
+        return;
+    }
+    for (k = 0u; k < q->nitems; k++) {
+        g_tl.work_before[k] = q->slot[k].stats.runs;
+    }
+}
+
+void tl_work_end(const mt_wq_t *q, uint64_t t0, uint64_t t1, const char *(*name_of)(uint32_t slot))
+{
+    uint32_t k;
+
+    if (g_tl.f == NULL) {
+        return;
+    }
+    for (k = 0u; k < q->nitems; k++) {
+        uint64_t r;
+        for (r = g_tl.work_before[k]; r < q->slot[k].stats.runs; r++) {
+            tl_slice(TL_WORK, name_of(k), t0, t1 - t0, "slot", k);
+        }
+    }
 }
 
 void tl_slice(tl_track_t track, const char *name, uint64_t ts, uint64_t dur, const char *arg_name,

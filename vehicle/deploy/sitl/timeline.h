@@ -16,7 +16,9 @@
  *                 "budget skip" (at the end of the tick whose scan skipped the task)
  *   timer thread  one "timer procs" slice per dispatch round, its simulated cost as duration
  *   IO thread     one "io procs" slice per dispatch round (no simulated cost: duration 0)
- *   work queue    one slice per work item run, named after the item
+ *   work queue    one slice per work item run, named after the item (from the items' run
+ *                 counters around the round; the simulation gives work no cost, so the
+ *                 round's items share its start and duration)
  *
  * Counts agree with the flight summary: task slices with each task's runs, instants with its
  * overruns, slips (sum of args.missed) and budget skips, dispatch slices with the proc sets'
@@ -41,9 +43,6 @@ typedef enum {
 /** Open FILE and write the header and the track names; false if it cannot be written. */
 bool tl_open(const char *path, const mt_wq_t *wq);
 
-/** True between tl_open and tl_close. */
-bool tl_on(void);
-
 /** A slice [ts, ts + dur] on a track; arg_name/arg (or NULL) becomes args. */
 void tl_slice(tl_track_t track, const char *name, uint64_t ts, uint64_t dur, const char *arg_name,
               uint64_t arg);
@@ -65,6 +64,12 @@ void tl_tick_begin(const mt_sched_t *sched, uint64_t sample);
 /** The end of the tick: its slice, and the slips, overruns and budget skips the scheduler
  *  counted in it (from its per-task counters, the same the summary prints). */
 void tl_tick_end(const mt_sched_t *sched, uint64_t now);
+
+/** Before a round of the work queue (mt_wq_run_pending): its items' run counters. */
+void tl_work_begin(const mt_wq_t *q);
+
+/** After it: one slice [t0, t1] per run each item's counter gained, named by name_of(slot). */
+void tl_work_end(const mt_wq_t *q, uint64_t t0, uint64_t t1, const char *(*name_of)(uint32_t slot));
 
 /** Finish the JSON and close the file; false on a write error or a task run the scheduler
  *  did not name (never expected). */
