@@ -117,6 +117,7 @@ static void put(mt_oring_t *r, const uint8_t *obj)
 /*@ requires MtORingInv(r);
     assigns r->rejected;
     ensures MtORingInv(r);
+    ensures r->rejected == (\old(r->rejected) < 0xFFFFFFFF ? \old(r->rejected) + 1 : \old(r->rejected));
 */
 // cppcheck-suppress misra-c2012-5.9 ; D-106 module-local helper, one per translation unit
 static void note_rejected(mt_oring_t *r)

@@ -129,11 +129,13 @@ mt_status_t mt_oring_init(mt_oring_t *r, void *storage, uint32_t elem, uint32_t 
       ensures data: \forall integer k; 0 <= k < r->elem ==>
           r->buf[MtIdxSlot(\old(r->tail), r->slots) * r->elem + k] == ((uint8_t *)obj)[k];
       ensures others: MtORingOthersKept{Pre, Post}(r, MtIdxSlot(\old(r->tail), r->slots));
+      ensures not_counted: r->rejected == \old(r->rejected);
     behavior full:
       assumes MtIdxCount(r->tail, r->head, r->slots) >= r->cap;
       ensures status: \result == MT_E_FULL;
       ensures unchanged: r->tail == \old(r->tail);
       ensures kept: MtORingBufKept{Pre, Post}(r);
+      ensures counted: r->rejected == (\old(r->rejected) < 0xFFFFFFFF ? \old(r->rejected) + 1 : \old(r->rejected));
     complete behaviors;
     disjoint behaviors;
 */
@@ -159,6 +161,7 @@ mt_status_t mt_oring_push(mt_oring_t *r, const void *obj);
         MtORingSame(r, MtIdxSlot(\old(r->tail), r->slots), (uint8_t *)obj);
     ensures others: \result != MT_E_FULL ==>
         MtORingOthersKept{Pre, Post}(r, MtIdxSlot(\old(r->tail), r->slots));
+    ensures not_counted: \result != MT_E_FULL ==> r->rejected == \old(r->rejected);
     behavior room:
       assumes MtIdxCount(r->tail, r->head, r->slots) < r->cap;
       ensures status: \result == MT_OK;
@@ -172,6 +175,7 @@ mt_status_t mt_oring_push(mt_oring_t *r, const void *obj);
       ensures status: \result == MT_E_FULL;
       ensures unchanged: r->tail == \old(r->tail);
       ensures kept: MtORingBufKept{Pre, Post}(r);
+      ensures counted: r->rejected == (\old(r->rejected) < 0xFFFFFFFF ? \old(r->rejected) + 1 : \old(r->rejected));
     complete behaviors;
     disjoint behaviors;
 */
@@ -206,10 +210,13 @@ uint32_t mt_oring_available(mt_oring_t *r);
       assumes MtIdxCount(r->tail, r->head, r->slots) == 0;
       ensures status: \result == MT_E_EMPTY;
       ensures unchanged: r->head == \old(r->head);
+      ensures untouched: r->lost == \old(r->lost) &&
+          \forall integer k; 0 <= k < r->elem ==> ((uint8_t *)out)[k] == \old(((uint8_t *)out)[k]);
     behavior one:
       assumes 1 <= MtIdxCount(r->tail, r->head, r->slots) <= r->cap;
       ensures status: \result == MT_OK;
       ensures consumed: r->head == MtIdxAdd(\old(r->head), 1, r->slots);
+      ensures not_lost: r->lost == \old(r->lost);
       ensures fifo: \forall integer k; 0 <= k < r->elem ==>
           ((uint8_t *)out)[k] == r->buf[MtIdxSlot(\old(r->head), r->slots) * r->elem + k];
     behavior drop_then_one:
@@ -236,6 +243,8 @@ mt_status_t mt_oring_pop(mt_oring_t *r, void *out);
       assumes MtIdxCount(r->tail, r->head, r->slots) == 0;
       ensures status: \result == MT_E_EMPTY;
       ensures unchanged: r->head == \old(r->head);
+      ensures untouched: r->lost == \old(r->lost) &&
+          \forall integer k; 0 <= k < r->elem ==> ((uint8_t *)out)[k] == \old(((uint8_t *)out)[k]);
     behavior one:
       assumes 1 <= MtIdxCount(r->tail, r->head, r->slots) <= r->cap;
       ensures status: \result == MT_OK;
@@ -267,6 +276,8 @@ mt_status_t mt_oring_peek(mt_oring_t *r, void *out);
         MtORingSame(r, MtIdxSlot(r->head, r->slots), (uint8_t *)obj) &&
         MtORingOthersKept{Pre, Post}(r, MtIdxSlot(r->head, r->slots));
     ensures kept: \result == MT_E_EMPTY ==> MtORingBufKept{Pre, Post}(r);
+    ensures lost: r->lost == (\old(MtORingCount(r)) > r->cap && \old(r->lost) < 0xFFFFFFFF ?
+                              \old(r->lost) + 1 : \old(r->lost));
 */
 mt_status_t mt_oring_update_front(mt_oring_t *r, const void *obj);
 

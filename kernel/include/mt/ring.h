@@ -150,6 +150,9 @@ uint32_t mt_bring_write(mt_bring_t *r, const uint8_t *src, uint32_t len);
                    (\result == 2 ==> vec[0].len + vec[1].len == r->reserved && vec[0].len > 0 && vec[1].len > 0);
     ensures first: \result >= 1 ==> vec[0].base == r->buf + MtIdxSlot(r->tail, r->cap);
     ensures second: \result == 2 ==> vec[1].base == r->buf;
+    ensures split: vec[0].len == \min(r->reserved, r->cap - MtIdxSlot(r->tail, r->cap)) &&
+                   vec[1].len == r->reserved - vec[0].len;
+    ensures count: \result == (r->reserved == 0 ? 0 : vec[1].len == 0 ? 1 : 2);
 */
 uint32_t mt_bring_reserve(mt_bring_t *r, mt_iovec_t vec[2], uint32_t len);
 
@@ -238,6 +241,9 @@ mt_status_t mt_bring_advance(mt_bring_t *r, uint32_t n);
                    (\result == 2 ==> vec[0].len + vec[1].len == MtBRingCount(r) && vec[0].len > 0 && vec[1].len > 0);
     ensures first: \result >= 1 ==> vec[0].base == r->buf + MtIdxSlot(r->head, r->cap);
     ensures second: \result == 2 ==> vec[1].base == r->buf;
+    ensures split: vec[0].len == \min(MtBRingCount(r), r->cap - MtIdxSlot(r->head, r->cap)) &&
+                   vec[1].len == MtBRingCount(r) - vec[0].len;
+    ensures count: \result == (MtBRingCount(r) == 0 ? 0 : vec[1].len == 0 ? 1 : 2);
 */
 uint32_t mt_bring_peek_vec(mt_bring_t *r, mt_iovec_t vec[2]);
 
