@@ -35,6 +35,8 @@ void mt_work_schedule_delayed_i(mt_work_t *w, uint32_t delay_us);
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
     ensures armed: MtWorkTimer(w, MT_WQ_TIMER_ONCE);
+    ensures deadline: w->wq->slot[w->slot].deadline_us == MtWqAfter(MtPortNow, delay_us);
+    ensures time: MtPortNow >= \old(MtPortNow);
 */
 void mt_work_schedule_delayed(mt_work_t *w, uint32_t delay_us);
 
@@ -68,8 +70,17 @@ mt_status_t mt_work_schedule_interval_i(mt_work_t *w, uint32_t period_us, uint32
             w->wq->slot[w->slot].period_us, MtPortNow, MtLocked;
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
-    ensures status: \result == MT_OK || \result == MT_E_INVALID;
-    ensures invalid: \result == MT_E_INVALID <==> period_us == 0;
+    behavior invalid:
+      assumes period_us == 0;
+      ensures status: \result == MT_E_INVALID;
+      ensures unchanged: MtWorkTimerKept{Pre, Post}(w);
+    behavior ok:
+      assumes period_us >= 1;
+      ensures status: \result == MT_OK;
+      ensures armed: MtWorkTimer(w, MT_WQ_TIMER_EVERY) && w->wq->slot[w->slot].period_us == period_us;
+      ensures deadline: w->wq->slot[w->slot].deadline_us == MtWqAfter(MtPortNow, delay_us);
+    complete behaviors;
+    disjoint behaviors;
 */
 mt_status_t mt_work_schedule_interval(mt_work_t *w, uint32_t period_us, uint32_t delay_us);
 
@@ -99,7 +110,14 @@ mt_status_t mt_work_cancel_i(mt_work_t *w);
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
     ensures off: MtWorkTimer(w, MT_WQ_TIMER_OFF);
-    ensures status: \result == MT_OK || \result == MT_E_STATE;
+    behavior stopped:
+      assumes w->wq->slot[w->slot].timer != MT_WQ_TIMER_OFF;
+      ensures status: \result == MT_OK;
+    behavior none:
+      assumes w->wq->slot[w->slot].timer == MT_WQ_TIMER_OFF;
+      ensures status: \result == MT_E_STATE;
+    complete behaviors;
+    disjoint behaviors;
 */
 mt_status_t mt_work_cancel(mt_work_t *w);
 
