@@ -105,19 +105,18 @@
         !MtWqQueued(q, s) && q->slot[s].timer == MT_WQ_TIMER_OFF && q->slot[s].shot == MT_WQ_SHOT_NONE;
 
     predicate MtWqStatsFresh(mt_wq_stats_t *st) =
-        st->starts == 0 && st->runs == 0 && st->merged == 0 && st->missed == 0;
+        st->starts == 0 && st->runs == 0 && st->total_run_us == 0 && st->first_start_us == 0 &&
+        st->last_start_us == 0 && st->max_run_us == 0 && st->min_interval_us == 0 &&
+        st->max_interval_us == 0 && st->max_latency_us == 0 && st->merged == 0 && st->missed == 0;
 */
 
 /* The clauses that the task, `_i` and `_isr` forms of an operation share (mt_wq_attach and
  * _i; mt_work_schedule, _i and _isr; mt_work_schedule_delayed and _i; mt_work_cancel and _i):
  * - MtWorkApart: an item to attach, apart from the queue;
- * - MtWqAttachStatus, MtWqScheduleStatus: the statuses the task forms return;
+ * - MtWqScheduleStatus: the statuses the task forms return;
  * - MtWorkMerged: merged exactly when the item was queued at L1;
  * - MtWorkTimer: the item's timer state is v (armed, stopped). */
 /*@ predicate MtWorkApart(mt_wq_t *q, mt_work_t *w) = \valid(w) && \separated(w, q);
-
-    predicate MtWqAttachStatus(integer r) =
-        r == MT_OK || r == MT_E_INVALID || r == MT_E_DUPLICATE || r == MT_E_FULL;
 
     predicate MtWqScheduleStatus(integer r) = r == MT_OK || r == MT_W_WQ_MERGED;
 

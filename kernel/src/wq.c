@@ -99,7 +99,10 @@ static void stats_clear(mt_wq_stats_t *st)
     ensures idle: e->timer == MT_WQ_TIMER_OFF && e->shot == MT_WQ_SHOT_NONE && MtSemInv(&e->done) &&
                   e->done.token == 0 && e->done.waiter == \null;
     ensures zero: e->stats.starts == 0 && e->stats.runs == 0 && e->stats.merged == 0 &&
-                  e->stats.missed == 0;
+                  e->stats.missed == 0 && e->stats.total_run_us == 0 && e->stats.first_start_us == 0 &&
+                  e->stats.last_start_us == 0 && e->stats.max_run_us == 0 &&
+                  e->stats.min_interval_us == 0 && e->stats.max_interval_us == 0 &&
+                  e->stats.max_latency_us == 0;
 */
 static void slot_set(mt_wq_slot_t *e, mt_work_fn_t fn, void *arg)
 {
@@ -262,8 +265,8 @@ void mt_work_init(mt_work_t *w, mt_work_fn_t fn, void *arg)
     ensures entry: q->slot[\old(q->nitems)].fn == fn && q->slot[\old(q->nitems)].arg == arg;
     ensures idle: !MtWqQueued(q, \old(q->nitems)) && q->slot[\old(q->nitems)].timer == MT_WQ_TIMER_OFF &&
                   q->slot[\old(q->nitems)].shot == MT_WQ_SHOT_NONE;
-    ensures fresh: q->slot[\old(q->nitems)].stats.starts == 0 && q->slot[\old(q->nitems)].stats.runs == 0 &&
-                   q->slot[\old(q->nitems)].stats.merged == 0 && q->slot[\old(q->nitems)].stats.missed == 0;
+    ensures fresh: MtWqStatsFresh(&q->slot[\old(q->nitems)].stats) && MtSemInv(&q->slot[\old(q->nitems)].done) &&
+                   q->slot[\old(q->nitems)].done.token == 0 && q->slot[\old(q->nitems)].done.waiter == \null;
 */
 static void attach_slot(mt_wq_t *q, mt_work_fn_t fn, void *arg)
 {

@@ -112,10 +112,29 @@ mt_status_t mt_proc_register_i(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg);
     assigns p->procs[p->count], p->count, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtProcSetInv(p);
-    ensures status: \result == MT_OK || \result == MT_E_INVALID || \result == MT_E_DUPLICATE ||
-                    \result == MT_E_FULL;
-    ensures grows_by_one: \result == MT_OK ==> p->count == \old(p->count) + 1;
-    ensures unchanged: \result != MT_OK ==> p->count == \old(p->count);
+    ensures prefix: \forall integer i; 0 <= i < \old(p->count) ==>
+        p->procs[i].fn == \old(p->procs[i].fn) && p->procs[i].arg == \old(p->procs[i].arg);
+    behavior invalid:
+      assumes fn == \null;
+      ensures status: \result == MT_E_INVALID;
+      ensures unchanged: p->count == \old(p->count);
+    behavior duplicate:
+      assumes fn != \null && MtProcRegistered(p, fn, arg);
+      ensures status: \result == MT_E_DUPLICATE;
+      ensures unchanged: p->count == \old(p->count);
+    behavior full:
+      assumes fn != \null && !MtProcRegistered(p, fn, arg) && p->count == MT_CFG_PROC_MAX;
+      ensures status: \result == MT_E_FULL;
+      ensures unchanged: p->count == \old(p->count);
+    behavior ok:
+      assumes fn != \null && !MtProcRegistered(p, fn, arg) && p->count < MT_CFG_PROC_MAX;
+      ensures status: \result == MT_OK;
+      ensures appended: p->count == \old(p->count) + 1;
+      ensures entry: p->procs[\old(p->count)].fn == fn && p->procs[\old(p->count)].arg == arg;
+      ensures fresh: p->procs[\old(p->count)].calls == 0 && p->procs[\old(p->count)].max_us == 0 &&
+                     p->procs[\old(p->count)].total_us == 0;
+    complete behaviors;
+    disjoint behaviors;
 */
 mt_status_t mt_proc_register(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg);
 

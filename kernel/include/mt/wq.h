@@ -185,6 +185,7 @@ typedef struct {
     ensures empty: q->nitems == 0 && q->count == 0 && q->running == MT_WQ_NONE && q->stop == 0;
     ensures prio: q->name == name && q->prio_base == base && q->prio_offset == offset;
     ensures zeroed: MtWqStatsFresh(&q->stats) && q->max_depth == 0 && q->refused == 0;
+    ensures no_wake: q->wake.token == 0 && q->wake.waiter == \null;
 */
 void mt_wq_init(mt_wq_t *q, const char *name, mt_prio_base_t base, int8_t offset);
 
@@ -227,6 +228,7 @@ void mt_work_init(mt_work_t *w, mt_work_fn_t fn, void *arg);
       ensures entry: q->slot[w->slot].fn == w->fn && q->slot[w->slot].arg == w->arg;
       ensures idle: MtWqSlotIdle(q, w->slot);
       ensures fresh: MtWqStatsFresh(&q->slot[w->slot].stats);
+      ensures no_waiter: q->slot[w->slot].done.token == 0 && q->slot[w->slot].done.waiter == \null;
     complete behaviors;
     disjoint behaviors;
 */
@@ -239,9 +241,30 @@ mt_status_t mt_wq_attach_i(mt_wq_t *q, mt_work_t *w);
     assigns w->wq, w->slot, q->nitems, q->slot[q->nitems], MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
-    ensures status: MtWqAttachStatus(\result);
-    ensures attached: \result == MT_OK ==> MtWorkAttached(w) && w->wq == q;
-    ensures unchanged: \result != MT_OK ==> q->nitems == \old(q->nitems);
+    ensures others: MtWqFnsKept{Pre, Post}(q);
+    behavior invalid:
+      assumes w->fn == \null;
+      ensures status: \result == MT_E_INVALID;
+      ensures unchanged: q->nitems == \old(q->nitems) && w->wq == \old(w->wq);
+    behavior duplicate:
+      assumes w->fn != \null && w->wq != \null;
+      ensures status: \result == MT_E_DUPLICATE;
+      ensures unchanged: q->nitems == \old(q->nitems) && w->wq == \old(w->wq);
+    behavior full:
+      assumes w->fn != \null && w->wq == \null && q->nitems == MT_CFG_WQ_MAX_ITEMS;
+      ensures status: \result == MT_E_FULL;
+      ensures unchanged: q->nitems == \old(q->nitems) && w->wq == \null;
+    behavior ok:
+      assumes w->fn != \null && w->wq == \null && q->nitems < MT_CFG_WQ_MAX_ITEMS;
+      ensures status: \result == MT_OK;
+      ensures attached: w->wq == q && w->slot == \old(q->nitems) && q->nitems == \old(q->nitems) + 1;
+      ensures item: MtWorkAttached(w);
+      ensures entry: q->slot[w->slot].fn == w->fn && q->slot[w->slot].arg == w->arg;
+      ensures idle: MtWqSlotIdle(q, w->slot);
+      ensures fresh: MtWqStatsFresh(&q->slot[w->slot].stats);
+      ensures no_waiter: q->slot[w->slot].done.token == 0 && q->slot[w->slot].done.waiter == \null;
+    complete behaviors;
+    disjoint behaviors;
 */
 mt_status_t mt_wq_attach(mt_wq_t *q, mt_work_t *w);
 
