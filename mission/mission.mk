@@ -76,8 +76,9 @@ test-mission: $(BUILD)/gcc/mt_mission_tests $(BUILD)/asanubsan/mt_mission_tests
 # The mission command tables, generated from MAVLink's definitions (common.xml and
 # ardupilotmega.xml of the pymavlink that tools/bootstrap.sh test pins) by
 # tools/mavcmd/gen_mav_cmds.py and committed, since the kernel builds and is proved without
-# Python: kernel/src/mt_mission_cmds.h (the rows of the kernel's k_cmds) and mission/mav_cmd_names.h (the
-# names mt-mission prints). check-mav-cmds regenerates them in memory and fails with a diff
+# Python: kernel/src/mt_mission_cmds.h (the rows of the kernel's k_cmds), kernel/spec/mt_spec_mission_cmds.h
+# (the ACSL predicates MtMissionIsNavId / MtMissionIsDoId over the same rows) and
+# mission/mav_cmd_names.h (the names mt-mission prints). check-mav-cmds regenerates them in memory and fails with a diff
 # when a committed one differs (a hand edit, or a changed command list in the generator).
 MAV_CMDS_PYTHON ?= python3
 .PHONY: mav-cmds check-mav-cmds

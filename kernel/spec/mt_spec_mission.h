@@ -7,13 +7,20 @@
  *
  * Only ACSL lives here: to a C compiler this header is empty. mt/mission.h includes it
  * after its types and the validation scratch (the predicates read mt_mission_t and the
- * scratch arrays).
+ * scratch arrays). The nav and do ids (MtMissionIsNavId, MtMissionIsDoId) are generated
+ * with the command table into mt_spec_mission_cmds.h.
  */
 #ifndef MT_SPEC_MISSION_H
 #define MT_SPEC_MISSION_H
 
+#include "mt_spec_mission_cmds.h"
+
 /*@ predicate MtMissionIsJumpId(integer id) = id == MT_MAV_CMD_DO_JUMP || id == MT_MAV_CMD_DO_JUMP_TAG;
     predicate MtMissionIsCallbackId(integer id) = !MtMissionIsJumpId(id) && id != MT_MAV_CMD_JUMP_TAG;
+    // an id of the command table: nav, do, jump or JUMP_TAG (any other id is unknown)
+    predicate MtMissionIsKnownId(integer id) =
+        MtMissionIsNavId(id) || MtMissionIsDoId(id) || MtMissionIsJumpId(id) ||
+        id == MT_MAV_CMD_JUMP_TAG;
 
     predicate MtMissionIdx(mt_mission_t *m, integer i) = 1 <= i < m->total;
 

@@ -19,6 +19,9 @@ Outputs (committed: the kernel builds and is proved without Python):
                                    to mission_check.c
     mission/mav_cmd_names.h        id -> MAVLink name (no MAV_CMD_ prefix) and location flag,
                                    private to mission/wpl.c
+    kernel/spec/mt_spec_mission_cmds.h
+                                   ACSL only: MtMissionIsNavId / MtMissionIsDoId, the ids of
+                                   the table's nav and do rows (mt_mission_kind_of's contract)
 Standard library only; the XML is parsed with xml.etree.
 """
 import argparse
@@ -34,6 +37,7 @@ PYMAVLINK_VERSION = "2.4.50"
 XML_FILES = ("common.xml", "ardupilotmega.xml")
 KERNEL_OUT = "kernel/src/mt_mission_cmds.h"
 NAMES_OUT = "mission/mav_cmd_names.h"
+SPEC_OUT = "kernel/spec/mt_spec_mission_cmds.h"
 TOOL = "tools/mavcmd/gen_mav_cmds.py"
 
 # The cases of ArduPilot's AP_Mission::mavlink_int_to_mission_cmd
@@ -392,6 +396,46 @@ def render_names(rows):
     return "\n".join(out)
 
 
+def id_disjunction(ids, indent):
+    """ACSL `id == a || id == b || ...` over ids, wrapped at COLUMN_LIMIT."""
+    terms = [f"id == {i}" for i in ids]
+    lines, cur = [], indent
+    for k, t in enumerate(terms):
+        piece = t + (" ||" if k < len(terms) - 1 else ";")
+        if cur != indent and len(cur) + 1 + len(piece) > COLUMN_LIMIT:
+            lines.append(cur)
+            cur = indent
+        cur = cur + piece if cur == indent else cur + " " + piece
+    lines.append(cur)
+    return lines
+
+
+def render_spec(rows, nav_last):
+    out = banner("mt_spec_mission_cmds.h",
+                 "ACSL classes of the mission command ids, the ones mission_check.c's table gives.")
+    out += [
+        "#ifndef MT_SPEC_MISSION_CMDS_H",
+        "#define MT_SPEC_MISSION_CMDS_H",
+        "",
+        "/* ACSL only (empty to a C compiler), included by mt_spec_mission.h: the ids of the rows of",
+        " * kernel/src/mt_mission_cmds.h by class, for mt_mission_kind_of's contract. The jumps",
+        " * (DO_JUMP, DO_JUMP_TAG) and JUMP_TAG are mt_spec_mission.h's MtMissionIsJumpId and",
+        " * MT_MAV_CMD_JUMP_TAG; every other id is unknown.",
+        f" * Nav: id <= {nav_last} (MAV_CMD_NAV_LAST) or one of AP_Mission::is_nav_cmd's exceptions",
+        f" * ({', '.join(NAV_EXCEPTIONS)}). Do: every other command",
+        " * but the jumps and JUMP_TAG (the conditions CONDITION_* are do commands). */",
+        "",
+        "/*@ predicate MtMissionIsNavId(integer id) =",
+    ]
+    out += id_disjunction([r[0] for r in rows if r[2] == "nav"], " " * 8)
+    out += [
+        "    predicate MtMissionIsDoId(integer id) =",
+    ]
+    out += id_disjunction([r[0] for r in rows if r[2] == "do"], " " * 8)
+    out += ["*/", "", "#endif /* MT_SPEC_MISSION_CMDS_H */", ""]
+    return "\n".join(out)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--check", action="store_true",
@@ -405,7 +449,8 @@ def main():
             cls = "condition" if class_comment(name, kind) else kind
             print(f"{ident:6d} {name:28s} {cls:9s} {' '.join(flags)}")
         return 0
-    outputs = {KERNEL_OUT: render_kernel(rows, nav_last), NAMES_OUT: render_names(rows)}
+    outputs = {KERNEL_OUT: render_kernel(rows, nav_last), NAMES_OUT: render_names(rows),
+               SPEC_OUT: render_spec(rows, nav_last)}
     stale = 0
     for rel, text in outputs.items():
         path = os.path.join(ROOT, rel)
@@ -430,8 +475,8 @@ def main():
             print(f"gen_mav_cmds: {stale} generated file(s) stale: run `make mav-cmds` and commit",
                   file=sys.stderr)
             return 1
-        print(f"gen_mav_cmds: {KERNEL_OUT} and {NAMES_OUT} match pymavlink {PYMAVLINK_VERSION} "
-              f"({len(rows)} commands)")
+        print(f"gen_mav_cmds: {KERNEL_OUT}, {NAMES_OUT} and {SPEC_OUT} match pymavlink "
+              f"{PYMAVLINK_VERSION} ({len(rows)} commands)")
     return 0
 
 

@@ -206,10 +206,14 @@ extern uint16_t mt_mission_scratch_target[MT_CFG_MISSION_MAX_CMDS];
 #include "mt_spec_mission.h"
 
 /** Classify a command id: MT_MISSION_KIND_NAV / DO / JUMP / TAG; 0 (HOME) when
- *  the id is unknown. [any context, pure] */
+ *  the id is unknown (not in the command table; the ids of each class are in
+ *  mt_spec_mission_cmds.h, generated with the table). [any context, pure] */
 /*@ assigns \nothing;
     ensures jump: \result == MT_MISSION_KIND_JUMP <==> MtMissionIsJumpId(id);
     ensures tag: \result == MT_MISSION_KIND_TAG <==> id == MT_MAV_CMD_JUMP_TAG;
+    ensures nav: \result == MT_MISSION_KIND_NAV <==> MtMissionIsNavId(id);
+    ensures do_cmd: \result == MT_MISSION_KIND_DO <==> MtMissionIsDoId(id);
+    ensures unknown: \result == MT_MISSION_KIND_HOME <==> !MtMissionIsKnownId(id);
     ensures range: \result <= MT_MISSION_KIND_TAG;
 */
 uint8_t mt_mission_kind_of(uint16_t id);
@@ -223,6 +227,11 @@ uint8_t mt_mission_kind_of(uint16_t id);
     ensures inv: MtMissionInv(m);
     ensures empty: m->total == 0 && m->state == MT_MISSION_STOPPED && m->generation == 0;
     ensures no_cursor: m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
+    ensures no_index: m->nav_idx == MT_MISSION_NONE && m->do_idx == MT_MISSION_NONE &&
+        m->prev_nav == MT_MISSION_NONE && m->do_done == 0;
+    ensures never_completed: m->completions == 0;
+    ensures callbacks: m->start_fn == start_fn && m->verify_fn == verify_fn &&
+        m->complete_fn == complete_fn && m->ctx == ctx;
 */
 void mt_mission_init(mt_mission_t *m, mt_mission_cmd_fn_t start_fn, mt_mission_cmd_fn_t verify_fn,
                      mt_mission_done_fn_t complete_fn, void *ctx);
@@ -560,9 +569,12 @@ mt_status_t mt_mission_next_nav(const mt_mission_t *m, uint16_t from, uint16_t *
 */
 mt_status_t mt_mission_get(const mt_mission_t *m, uint16_t i, mt_mission_cmd_t *out, bool *is_current);
 
-/** Times the jump at index i was taken since its last reset (0 for others). Pure. */
+/** Times the jump at index i was taken since its last reset: its counter
+ *  m->count[i] (0 for any other index, home and i >= count included). Pure. */
 /*@ requires inv: MtMissionInv(m);
     assigns \nothing;
+    ensures counter: MtMissionIdx(m, i) && m->kind[i] == MT_MISSION_KIND_JUMP ==>
+        \result == m->count[i];
     ensures bounded: MtMissionIdx(m, i) && m->kind[i] == MT_MISSION_KIND_JUMP && m->repeat[i] >= 0 ==>
         0 <= \result <= m->repeat[i];
     ensures other: !(MtMissionIdx(m, i) && m->kind[i] == MT_MISSION_KIND_JUMP) ==> \result == 0;
