@@ -195,4 +195,15 @@
         r->merged == q->stats.merged && r->missed == q->stats.missed && r->refused == q->refused;
 */
 
+/* The time fields each report copies (the means and the rate, 64-bit quotients, are pinned
+ * only when zero: see the reports' mean_guarded clauses). */
+/*@ predicate MtWorkReportTimes(mt_work_report_t *r, mt_wq_stats_t *st) =
+        r->max_run_us == st->max_run_us && r->min_interval_us == st->min_interval_us &&
+        r->max_interval_us == st->max_interval_us && r->max_latency_us == st->max_latency_us;
+
+    predicate MtWqReportTimes(mt_wq_report_t *r, mt_wq_stats_t *st) =
+        r->max_run_us == st->max_run_us && r->min_interval_us == st->min_interval_us &&
+        r->max_interval_us == st->max_interval_us && r->max_latency_us == st->max_latency_us;
+*/
+
 #endif /* MT_SPEC_WQ_H */

@@ -39,6 +39,10 @@ static uint32_t mean_interval_us(const mt_wq_stats_t *st)
     ensures counts: r->merged == e->stats.merged && r->missed == e->stats.missed;
     ensures mean_guarded: e->stats.runs == 0 ==> r->mean_run_us == 0;
     ensures interval_guarded: e->stats.starts < 2 ==> r->mean_interval_us == 0 && r->rate_mhz == 0;
+    ensures maxima: r->max_run_us == e->stats.max_run_us && r->min_interval_us == e->stats.min_interval_us &&
+                    r->max_interval_us == e->stats.max_interval_us &&
+                    r->max_latency_us == e->stats.max_latency_us;
+    ensures timer: r->timer == e->timer && r->period_us == (e->timer == MT_WQ_TIMER_EVERY ? e->period_us : 0);
 */
 static void fill_work_report(const mt_wq_slot_t *e, mt_work_report_t *r)
 {

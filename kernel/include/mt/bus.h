@@ -239,6 +239,7 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
       ensures counted: t->rejected == MtSatInc(\old(t->rejected));
       ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
                          t->publishes == \old(t->publishes);
+      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
       ensures none_notified: MtPublishNotifiedNone{Old, Here}(t);
     behavior behind:
       assumes size == t->size && MtTopicBehind(t);
@@ -246,6 +247,7 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
       ensures counted: t->rejected == MtSatInc(\old(t->rejected));
       ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
                          t->publishes == \old(t->publishes);
+      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
       ensures none_notified: MtPublishNotifiedNone{Old, Here}(t);
     behavior ok:
       assumes size == t->size && !MtTopicBehind(t);
@@ -291,6 +293,33 @@ mt_status_t mt_topic_publish_i(mt_topic_t *t, const void *msg, uint32_t size);
         \forall integer i; t->nnotify <= i < MT_CFG_BUS_MAX_NOTIFY ==>
             MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]);
     ensures none_notified: \result != MT_OK ==> MtPublishNotifiedNone{Old, Here}(t);
+    behavior msg_size:
+      assumes size != t->size;
+      ensures status: \result == MT_E_BUS_MSG_SIZE;
+      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
+                         t->publishes == \old(t->publishes);
+      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+    behavior behind:
+      assumes size == t->size && MtTopicBehind(t);
+      ensures status: \result == MT_E_BUS_BEHIND;
+      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
+                         t->publishes == \old(t->publishes);
+      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+    behavior ok:
+      assumes size == t->size && !MtTopicBehind(t);
+      ensures status: \result == MT_OK;
+      ensures slot: t->head == MtSlotNext(\old(t->head), t->qlen);
+      ensures stamped: t->stamp[t->head] == t->gen;
+      ensures data: \forall integer k; 0 <= k < t->size ==>
+          t->buf[t->head * t->size + k] == ((uint8_t *)msg)[k];
+      ensures others_kept: \forall integer k; 0 <= k < t->size * t->qlen ==>
+          (k < t->head * t->size || k >= t->head * t->size + t->size) ==>
+          t->buf[k] == \old(t->buf[k]);
+      ensures published: t->published == 1;
+      ensures counted: t->publishes == MtSatInc(\old(t->publishes)) &&
+                       t->rejected == \old(t->rejected);
+    complete behaviors;
+    disjoint behaviors;
 */
 mt_status_t mt_topic_publish(mt_topic_t *t, const void *msg, uint32_t size);
 
@@ -316,6 +345,33 @@ mt_status_t mt_topic_publish(mt_topic_t *t, const void *msg, uint32_t size);
         \forall integer i; t->nnotify <= i < MT_CFG_BUS_MAX_NOTIFY ==>
             MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]);
     ensures none_notified: \result != MT_OK ==> MtPublishNotifiedNone{Old, Here}(t);
+    behavior msg_size:
+      assumes size != t->size;
+      ensures status: \result == MT_E_BUS_MSG_SIZE;
+      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
+                         t->publishes == \old(t->publishes);
+      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+    behavior behind:
+      assumes size == t->size && MtTopicBehind(t);
+      ensures status: \result == MT_E_BUS_BEHIND;
+      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
+                         t->publishes == \old(t->publishes);
+      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+    behavior ok:
+      assumes size == t->size && !MtTopicBehind(t);
+      ensures status: \result == MT_OK;
+      ensures slot: t->head == MtSlotNext(\old(t->head), t->qlen);
+      ensures stamped: t->stamp[t->head] == t->gen;
+      ensures data: \forall integer k; 0 <= k < t->size ==>
+          t->buf[t->head * t->size + k] == ((uint8_t *)msg)[k];
+      ensures others_kept: \forall integer k; 0 <= k < t->size * t->qlen ==>
+          (k < t->head * t->size || k >= t->head * t->size + t->size) ==>
+          t->buf[k] == \old(t->buf[k]);
+      ensures published: t->published == 1;
+      ensures counted: t->publishes == MtSatInc(\old(t->publishes)) &&
+                       t->rejected == \old(t->rejected);
+    complete behaviors;
+    disjoint behaviors;
 */
 mt_status_t mt_topic_publish_isr(mt_topic_t *t, const void *msg, uint32_t size);
 

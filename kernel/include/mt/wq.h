@@ -489,8 +489,11 @@ mt_status_t mt_work_run_wait(mt_work_t *w, uint64_t timeout_us);
     ensures counts: MtWorkReportCounts(r, &w->wq->slot[w->slot].stats);
     ensures mean_guarded: w->wq->slot[w->slot].stats.runs == 0 ==> r->mean_run_us == 0;
     ensures interval_guarded: MtWorkReportIntervalGuarded(r, &w->wq->slot[w->slot].stats);
-    ensures queued: (r->queued == 0 || r->queued == 1) && (r->queued == 1 <==> MtWqQueued(w->wq, w->slot));
+    ensures queued: (r->queued == 0 || r->queued == 1) && (r->queued == 1 <==> \old(MtWqQueued(w->wq, w->slot)));
     ensures running: r->running == (w->wq->running == w->slot ? 1 : 0);
+    ensures times: MtWorkReportTimes(r, &w->wq->slot[w->slot].stats);
+    ensures timer: r->timer == w->wq->slot[w->slot].timer &&
+        r->period_us == (w->wq->slot[w->slot].timer == MT_WQ_TIMER_EVERY ? w->wq->slot[w->slot].period_us : 0);
 */
 void mt_work_report(const mt_work_t *w, mt_work_report_t *r);
 
@@ -505,6 +508,8 @@ void mt_work_report(const mt_work_t *w, mt_work_report_t *r);
     ensures sizes: r->items == q->nitems && r->depth == q->count && r->max_depth == q->max_depth;
     ensures mean_guarded: q->stats.runs == 0 ==> r->mean_run_us == 0;
     ensures interval_guarded: q->stats.starts < 2 ==> r->mean_interval_us == 0;
+    ensures name: r->name == q->name;
+    ensures times: MtWqReportTimes(r, &q->stats);
 */
 void mt_wq_report(const mt_wq_t *q, mt_wq_report_t *r);
 
