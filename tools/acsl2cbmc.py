@@ -2283,6 +2283,11 @@ def is_annotation(text):
 
 def annotation_kind(text):
     body = strip_annotation(text).lstrip()
+    # ACSL line comments before the first word (`/*@ // why ... predicate P = ...`) do not
+    # decide the kind: skip them, else a logic block would be read as a contract.
+    while body.startswith("//"):
+        nl = body.find("\n")
+        body = "" if nl < 0 else body[nl + 1:].lstrip()
     m = re.match(r"[A-Za-z_\\]+", body)
     word = m.group(0) if m else ""
     if word in ("predicate", "logic", "ghost", "lemma", "axiomatic", "inductive", "type",

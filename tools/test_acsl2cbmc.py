@@ -220,6 +220,17 @@ class Sample(unittest.TestCase):
         self.assertIn("mt_counter_push: ensures room.grown",
                       man["functions"]["mt_counter_push"]["labels"])
 
+    def test_line_comment_before_logic(self):
+        # a logic block whose first line is an ACSL line comment is still a logic block
+        header = SAMPLE_H + ("/*@ // a note before the first word\n"
+                             "    predicate MtCounterEmpty(mt_counter_t *c) = c->n == 0;\n"
+                             "*/\n")
+        write(os.path.join(self.src, "mt_counter.h"), header)
+        t = translate([os.path.join(self.src, "mt_counter.h")], [self.src], self.out)
+        self.assertEqual(t.returncode, 0, t.stderr)
+        with open(os.path.join(self.out, "mtc_logic.h")) as f:
+            self.assertIn("mtc_MtCounterEmpty(", f.read())
+
     def test_cbmc_proves_sample(self):
         failed, total = self.run_sample()
         self.assertEqual(failed, [])
