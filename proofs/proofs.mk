@@ -28,10 +28,15 @@ WP_ORDER     := sched sched_loop wq_run bus mission bus_sub mission_check ring m
                 wq wq_timer proc wq_report laws time sem chibios_time status
 WP_ALL_MODS  := $(filter-out invoke mission_invoke bus_invoke,$(basename $(notdir $(wildcard kernel/src/*.c)))) laws chibios_time
 WP_MODULES   := $(filter $(WP_ALL_MODS),$(WP_ORDER)) $(filter-out $(WP_ORDER),$(WP_ALL_MODS))
-# Per proof goal; smoke tests have their own limit (-wp-smoke-timeout, 2 s by default). The
-# slowest passing goal takes about 7 s on an idle 2-core machine: 20 s leaves room for a loaded
-# CI runner, and costs nothing on goals that pass.
+# Per proof goal; smoke tests have their own limit (-wp-smoke-timeout, 2 s by default). Most
+# goals pass in under 7 s on an idle 2-core machine: 20 s leaves room for a loaded CI runner,
+# and costs nothing on goals that pass. WP_TIMEOUT_<module> raises it for one module, with the
+# goal that needs it named here and in assumption W1, which the report prints:
+# - mission: put_all's loop invariant `copied` takes 960 thousand CVC4 steps, 15.8 s to 22.7 s
+#   on the 2-core machines here (the same task text, measured twice).
 WP_TIMEOUT   := 20
+WP_TIMEOUT_mission := 40
+wp_timeout    = $(or $(WP_TIMEOUT_$(1)),$(WP_TIMEOUT))
 # Smoke tests (proofs/wp/README.md, "Smoke tests"): decided by Qed and CVC4; Z3 declines a task
 # with this limit (proofs/wp/goal_only.sh), so it must differ from WP_TIMEOUT. `make wp-canary`
 # (part of `make wp`) shows that these settings still find contradictions.
@@ -86,7 +91,7 @@ wp_fct        = $(or $(WP_FCT),$(WP_FCT_$(1)))
 # @lemma to prove the module's lemmas alone (a run with -wp-fct proves no lemma).
 wp_prop       = $(WP_PROP_$(1))
 WP_CORE_FLAGS = -wp -wp-rte -warn-unsigned-overflow -warn-unsigned-downcast \
-           $(if $(filter no,$(WP_SMOKE)),-wp-no-smoke-tests,-wp-smoke-tests) -wp-smoke-timeout $(WP_SMOKE_TIMEOUT) -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT)
+           $(if $(filter no,$(WP_SMOKE)),-wp-no-smoke-tests,-wp-smoke-tests) -wp-smoke-timeout $(WP_SMOKE_TIMEOUT) -wp-prover $(WP_PROVERS)
 WP_FLAGS = $(WP_CORE_FLAGS) -wp-par $(WP_PAR) -wp-cache $(WP_CACHE) -load-module $(WP_POLL)
 # Frama-C's task server sleeps 50 ms between rounds; proofs/wp/wp_poll.ml polls every 2 ms
 # (compiled against the installed Frama-C by the rule below). Verdicts are unchanged.
@@ -161,7 +166,7 @@ $(WP_POLL): proofs/wp/wp_poll.ml
 # With WP_REUSE_LOCAL=yes (make reprove) a module whose input digest (wp_inputs) equals the one
 # stored by this tree's last completed run of it is not run: replayed.txt marks the replay.
 wp_inputs = { frama-c -version; cat $(WP_WHY3CONF) proofs/wp/wp_poll.ml proofs/wp/goal_only.sh \
-    proofs/wp/z3_fixedto.drv; echo '$(WP_FLAGS) $(call wp_model,$(1)) $(call wp_fct,$(1)) \
+    proofs/wp/z3_fixedto.drv; echo '$(WP_FLAGS) -wp-timeout $(call wp_timeout,$(1)) $(call wp_model,$(1)) $(call wp_fct,$(1)) \
     $(call wp_prop,$(1)) $(call wp_inc,$(1))'; \
     cat $(call wp_src,$(1)) $(sort $(wildcard $(patsubst -I%,%/*.h,$(call wp_inc,$(1))))); } \
     | sha256sum | cut -d' ' -f1
@@ -189,7 +194,7 @@ $(addprefix wp-run-,$(WP_MODULES)): wp-run-%: $(WP_WHY3CONF) $(WP_POLL)
 	@$(if $(filter none,$(WP_CACHE)),rm -rf $(WP_DIR)/$*/session,python3 proofs/wp/cache.py seed \
 	    $(WP_CACHE_DIR)/$*.json $(WP_DIR)/$*/session/cache >/dev/null)
 	@start=$$(date +%s.%N); \
-	WHY3CONFIG=$(WP_WHY3CONF) frama-c $(WP_FLAGS) -wp-model $(call wp_model,$*) \
+	WHY3CONFIG=$(WP_WHY3CONF) frama-c $(WP_FLAGS) -wp-timeout $(call wp_timeout,$*) -wp-model $(call wp_model,$*) \
 	    $(if $(call wp_fct,$*),-wp-fct $(call wp_fct,$*)) -cpp-extra-args="$(call wp_inc,$*)" \
 	    $(if $(call wp_prop,$*),-wp-prop $(call wp_prop,$*)) \
 	    -wp-session $(WP_DIR)/$*/session -wp-report-json $(WP_DIR)/$*/report.json \
@@ -217,7 +222,7 @@ wp_list   = $(subst $(wp_empty) $(wp_empty),$(wp_comma),$(strip $(1)))
 wp-canary: $(WP_WHY3CONF) $(WP_POLL)
 	@mkdir -p $(WP_DIR)/canary
 	@rm -f $(WP_DIR)/canary/result.txt $(WP_DIR)/canary/result.json
-	@WHY3CONFIG=$(WP_WHY3CONF) frama-c $(WP_CORE_FLAGS) -wp-par $(WP_PAR) -load-module $(WP_POLL) \
+	@WHY3CONFIG=$(WP_WHY3CONF) frama-c $(WP_CORE_FLAGS) -wp-timeout $(WP_TIMEOUT) -wp-par $(WP_PAR) -load-module $(WP_POLL) \
 	    -cpp-extra-args="$(WP_INC)" -wp-model Typed -wp-cache none \
 	    proofs/wp/canary/smoke_canary.c >$(WP_DIR)/canary/wp.log 2>&1 || \
 	    { tail -n 20 $(WP_DIR)/canary/wp.log; exit 1; }
