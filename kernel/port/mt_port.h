@@ -120,14 +120,16 @@ int32_t mt_port_suspend_s(mt_port_tref_t *ref, uint64_t timeout_us);
 /** Un-park the thread referenced by *ref, if any. I-class: lock held. */
 /*@ requires held: MtLocked == 1;
     requires valid_ref: \valid(ref);
-    assigns *ref;
+    assigns *ref, MtPortWakes;
     ensures cleared: *ref == \null;
     behavior waiter:
       assumes *ref != \null;
       ensures woke: \result == \true;
+      ensures delivered: MtPortWakes != \old(MtPortWakes);
     behavior nobody:
       assumes *ref == \null;
       ensures none: \result == \false;
+      ensures none_delivered: MtPortWakes == \old(MtPortWakes);
     complete behaviors;
     disjoint behaviors;
 */

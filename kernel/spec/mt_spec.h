@@ -17,6 +17,11 @@
  *   mt_port_resume_i() while parked, counted modulo 2^64. A park that ends by a
  *   hand-off changes it; a park that times out, and every other call, leave it.
  *   This is how a contract says "the caller was handed the token".
+ * - MtPortWakes: the wake-ups mt_port_resume_i() has delivered to parked threads, counted
+ *   modulo 2^64. A resume that finds a parked thread changes it; one that finds none, and
+ *   every other port call, leave it. This is how a contract says "the parked waiter was
+ *   resumed" (mt_sem_signal_i's hand-off). A callback may signal a semaphore (assumption
+ *   A1), so every trampoline may change it too.
  * - MtCalls[slot]: how many times the kernel has called the callback of a slot
  *   through its trampoline (mt_invoke.h), modulo 2^64 (MtCount64). Only a trampoline's
  *   contract changes it, so "task i ran once" is the postcondition
@@ -56,6 +61,7 @@
 /*@ ghost int MtLocked; */
 /*@ ghost unsigned long long MtPortNow; */
 /*@ ghost unsigned long long MtPortHandoffs; */
+/*@ ghost unsigned long long MtPortWakes; */
 /* long long: no kernel object has a field of that type, so in WP's typed memory model the
  * counters share no memory with kernel state and no frame goal has to separate them. */
 /*@ ghost long long MtCalls[MT_CALL_SLOTS]; */

@@ -114,6 +114,33 @@
                        \at(t->rejected, L2) == MtSatInc(\at(t->rejected, L1));
 */
 
+/* The per-outcome clauses that the three forms state alike (their behaviors msg_size, behind
+ * and ok use these under the same labels), from state L1 before the call to L2 after it.
+ * The scalar arguments are read by the clause, so that the prover sees the same terms in the
+ * lock-held form's proof and in the task and ISR forms' (through predicates that read the
+ * topic's fields themselves, five goals of mt_topic_publish_i timed out in both provers):
+ * MtPublishKept            a refusal: generation, head and publish count unchanged;
+ * MtPublishNothingWritten  a refusal: no byte of the storage changed;
+ * MtPublishData            the n bytes at buf + off are the message's (read at L2);
+ * MtPublishOthersKept      every byte of the len at buf outside [off, off + n) is unchanged;
+ * MtPublishNotified        the step of every registered notifier (n of them), MtNotifyStep;
+ * MtPublishUnusedKept      no notifier slot from n on was called. */
+/*@ predicate MtPublishKept{L1, L2}(mt_topic_t *t) =
+        \at(t->gen, L2) == \at(t->gen, L1) && \at(t->head, L2) == \at(t->head, L1) &&
+        \at(t->publishes, L2) == \at(t->publishes, L1);
+
+    predicate MtPublishNothingWritten{L1, L2}(mt_topic_t *t) =
+        \forall integer k; 0 <= k < \at(t->size * t->qlen, L2) ==>
+            \at(t->buf[k], L2) == \at(t->buf[k], L1);
+
+    predicate MtPublishData(uint8_t *buf, integer off, uint8_t *msg, integer n) =
+        \forall integer k; 0 <= k < n ==> buf[off + k] == msg[k];
+
+    predicate MtPublishOthersKept{L1, L2}(uint8_t *buf, integer len, integer off, integer n) =
+        \forall integer k; 0 <= k < len ==> (k < off || k >= off + n) ==>
+            \at(buf[k], L2) == \at(buf[k], L1);
+*/
+
 /* A publish's step for registered notifier i, from state L1 to L2 (bus.h, "Notifiers"):
  * MtNotifyFired  it was called once through its trampoline (MtCalls slot MT_CALL_NOTIFY(i)),
  *                its call count went up and its last generation is the topic's;
@@ -167,6 +194,13 @@
  * calls no unregistered entry: clauses notified and unused_not_called.) */
 /*@ predicate MtPublishNotifiedNone{L1, L2}(mt_topic_t *t) =
         \forall integer i; 0 <= i < MT_CFG_BUS_MAX_NOTIFY ==> MtNotifyKept{L1, L2}(t, i);
+
+    predicate MtPublishNotified{L1, L2}(mt_topic_t *t, integer n) =
+        \forall integer i; 0 <= i < n ==> MtNotifyStep{L1, L2}(t, i);
+
+    predicate MtPublishUnusedKept{L1, L2}(integer n) =
+        \forall integer i; n <= i < MT_CFG_BUS_MAX_NOTIFY ==>
+            \at(MtCalls[MT_CALL_NOTIFY(i)], L2) == \at(MtCalls[MT_CALL_NOTIFY(i)], L1);
 */
 
 /* Lemma (proved by WP): a publish shifts every retained message one place back, in slot

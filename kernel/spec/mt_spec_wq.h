@@ -145,6 +145,30 @@
         \at(MtWqRel(w->wq, w->wq->where[w->slot]), L2) == \at(w->wq->count, L1);
 */
 
+/* What an activation of slot s of q states, in every form (mt_wq_schedule_slot_i,
+ * mt_work_schedule_i and its task and ISR forms), from L1 to L2:
+ * MtWqDepth          the depth mark is raised to the queue's new length (kept otherwise);
+ * MtWqMergesKept     neither merge count moved (a queued activation);
+ * MtWqMergesCounted  both merge counts moved, saturating (a merged activation);
+ * MtWqWoken          the thread's semaphore was signalled (mt/sem.h: MtSemSignalled);
+ * MtWqNotWoken       it was not (MtSemUnsignalled). */
+/*@ predicate MtWqDepth{L1, L2}(mt_wq_t *q) =
+        \at(q->max_depth, L2) == (\at(q->max_depth, L1) < \at(q->count, L2) ?
+                                  \at(q->count, L2) : \at(q->max_depth, L1));
+
+    predicate MtWqMergesKept{L1, L2}(mt_wq_t *q, integer s) =
+        \at(q->slot[s].stats.merged, L2) == \at(q->slot[s].stats.merged, L1) &&
+        \at(q->stats.merged, L2) == \at(q->stats.merged, L1);
+
+    predicate MtWqMergesCounted{L1, L2}(mt_wq_t *q, integer s) =
+        \at(q->slot[s].stats.merged, L2) == MtWqInc32(\at(q->slot[s].stats.merged, L1)) &&
+        \at(q->stats.merged, L2) == MtWqInc32(\at(q->stats.merged, L1));
+
+    predicate MtWqWoken{L1, L2}(mt_wq_t *q) = MtSemSignalled{L1, L2}(\at(&q->wake, L1));
+
+    predicate MtWqNotWoken{L1, L2}(mt_wq_t *q) = MtSemUnsignalled{L1, L2}(\at(&q->wake, L1));
+*/
+
 /* The timer tick at now (mt_wq_timer_tick_i) from L1 to L2, over the slots attached at L2:
  * the item of a due timer is queued, a timer not due is unchanged, a due ONCE timer is
  * stopped, every EVERY timer is ahead of now; what was queued at L1 still is. */

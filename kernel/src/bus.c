@@ -287,7 +287,7 @@ static void put(mt_topic_t *t, const uint8_t *msg)
     requires MtTopicInv(t);
     requires i < t->nnotify;
     assigns t->notify_last_gen[i], t->notify_last_us[i], t->notify_calls[i],
-            t->notify_gated[i], t->notified, MtPortNow, MtCalls[MT_CALL_NOTIFY(i)];
+            t->notify_gated[i], t->notified, MtPortNow, MtPortWakes, MtCalls[MT_CALL_NOTIFY(i)];
     ensures MtTopicInv(t);
     ensures step:
         (t->notify_calls[i] == MtSatInc(\old(t->notify_calls[i])) &&
@@ -350,7 +350,7 @@ static void notify_one(mt_topic_t *t, uint32_t i)
     assigns t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow,
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow, MtPortWakes,
             MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
     ensures MtTopicInv(t);
     ensures notified: \forall integer i; 0 <= i < t->nnotify ==>
@@ -420,7 +420,7 @@ static void notify_all(mt_topic_t *t)
         loop assigns i, t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow,
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], t->notified, MtPortNow, MtPortWakes,
             MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
         loop variant n - i;
     */

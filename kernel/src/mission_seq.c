@@ -167,7 +167,7 @@ mt_status_t mt_mission_next_nav(const mt_mission_t *m, uint16_t from, uint16_t *
 
 /* Transition into COMPLETE: the only call of the complete callback. */
 /*@ requires MtMissionInv(m) && m->state == MT_MISSION_RUNNING;
-    assigns m->state, m->nav, m->do_cmd, m->do_done, m->completions, MtPortNow;
+    assigns m->state, m->nav, m->do_cmd, m->do_done, m->completions, MtPortNow, MtPortWakes;
     ensures MtMissionInv(m);
     ensures m->state == MT_MISSION_COMPLETE && m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE;
     ensures complete_once: m->completions == \old(m->completions) + 1 || \old(m->completions) == 0xFFFFFFFF;
@@ -209,7 +209,7 @@ static void set_do(mt_mission_t *m, uint16_t d)
 /* Start the active do command: a JUMP_TAG is handled here (no callback); the
  * start result of a do command is ignored [start_command]. */
 /*@ requires MtMissionInv(m) && m->do_cmd != MT_MISSION_NONE;
-    assigns MtPortNow;
+    assigns MtPortNow, MtPortWakes;
 */
 static void start_do(mt_mission_t *m)
 {
@@ -220,7 +220,7 @@ static void start_do(mt_mission_t *m)
 
 /* Verify the active do command: a JUMP_TAG verifies at once [verify_command]. */
 /*@ requires MtMissionInv(m) && m->do_cmd != MT_MISSION_NONE;
-    assigns MtPortNow;
+    assigns MtPortNow, MtPortWakes;
 */
 static bool verify_do(mt_mission_t *m)
 {
@@ -314,7 +314,7 @@ static void attach_do(mt_mission_t *m, uint16_t d)
 /*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
     requires 1 <= p <= m->total;
     assigns m->nav, m->nav_idx, m->prev_nav, m->do_cmd, m->do_idx, m->do_done,
-            m->count[0 .. m->total - 1], MtPortNow;
+            m->count[0 .. m->total - 1], MtPortNow, MtPortWakes;
     ensures MtMissionInv(m);
     ensures \result == 0 || \result == 1;
     ensures \result == 1 ==> m->nav != MT_MISSION_NONE;
@@ -333,7 +333,7 @@ static int advance(mt_mission_t *m, uint16_t p)
         loop invariant m->nav == MT_MISSION_NONE && m->do_cmd == MT_MISSION_NONE && m->do_done == 0;
         loop invariant d == MT_MISSION_NONE || (d == m->do_idx && MtMissionIdx(m, d));
         loop assigns k, q, d, m->nav, m->nav_idx, m->prev_nav, m->do_cmd, m->do_idx, m->do_done,
-                     m->count[0 .. m->total - 1], MtPortNow;
+                     m->count[0 .. m->total - 1], MtPortNow, MtPortWakes;
         loop variant m->total + ADVANCE_EXTRA - k;
     */
     for (k = 0u; k < ((uint32_t)m->total + ADVANCE_EXTRA); k++) {
@@ -413,7 +413,7 @@ void mt_mission_preload(mt_mission_t *m, uint16_t p)
  * JUMP_TAG); a nav command or the end sets do_done. */
 /*@ requires MtMissionInv(m) && m->total >= 2 && m->nav != MT_MISSION_NONE;
     requires m->do_cmd == MT_MISSION_NONE;
-    assigns m->do_cmd, m->do_idx, m->do_done, MtPortNow;
+    assigns m->do_cmd, m->do_idx, m->do_done, MtPortNow, MtPortWakes;
     ensures MtMissionInv(m);
 */
 static void do_search(mt_mission_t *m)
@@ -437,7 +437,7 @@ static void do_search(mt_mission_t *m)
  * advance when none is active); 0 when the mission completed. */
 /*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
     assigns m->state, m->nav, m->nav_idx, m->prev_nav, m->do_cmd, m->do_idx, m->do_done,
-            m->completions, m->count[0 .. m->total - 1], MtPortNow;
+            m->completions, m->count[0 .. m->total - 1], MtPortNow, MtPortWakes;
     ensures MtMissionInv(m);
     ensures \result == 0 || \result == 1;
     ensures \result == 1 ==> m->state == MT_MISSION_RUNNING && m->nav != MT_MISSION_NONE &&
@@ -464,7 +464,7 @@ static int nav_step(mt_mission_t *m)
 
 /* The do part of an update: verify the active do command, or run the do search. */
 /*@ requires MtMissionInv(m) && m->total >= 2 && m->nav != MT_MISSION_NONE;
-    assigns m->do_cmd, m->do_idx, m->do_done, MtPortNow;
+    assigns m->do_cmd, m->do_idx, m->do_done, MtPortNow, MtPortWakes;
     ensures MtMissionInv(m);
 */
 static void do_step(mt_mission_t *m)

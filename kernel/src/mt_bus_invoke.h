@@ -21,7 +21,7 @@
 /*@ requires held: MtLocked == 1;
     requires callable: fn != \null;
     requires slot: slot < MT_CALL_SLOTS;
-    assigns MtPortNow, MtCalls[slot];
+    assigns MtPortNow, MtPortWakes, MtCalls[slot];
     ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
     ensures counted: MtCalls[slot] == MtCount64(\old(MtCalls[slot]), 1);
 */
@@ -32,7 +32,7 @@ void mt_bus_invoke_notify(mt_bus_notify_fn_t fn, void *arg, uint32_t slot);
  *  The contract is A1's view of every notifier (nothing of the topic is written; the
  *  semaphore it signals is outside the bus's contracts); WP never calls it directly. */
 /*@ requires held: MtLocked == 1;
-    assigns MtPortNow;
+    assigns MtPortNow, MtPortWakes;
     ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
 */
 void mt_bus_invoke_wake(void *sem);

@@ -22,7 +22,7 @@
 /** Call fn(arg), the callback of slot `slot`. */
 /*@ requires callable: fn != \null;
     requires slot: slot < MT_CALL_SLOTS;
-    assigns MtPortNow, MtCalls[slot];
+    assigns MtPortNow, MtPortWakes, MtCalls[slot];
     ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
     ensures counted: MtCalls[slot] == MtCount64(\old(MtCalls[slot]), 1);
 */
@@ -32,7 +32,7 @@ void mt_invoke(void (*fn)(void *), void *arg, uint32_t slot);
  *  function). */
 /*@ requires callable: fn != \null;
     requires slot: slot < MT_CALL_SLOTS;
-    assigns MtPortNow, MtCalls[slot];
+    assigns MtPortNow, MtPortWakes, MtCalls[slot];
     ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
     ensures counted: MtCalls[slot] == MtCount64(\old(MtCalls[slot]), 1);
 */

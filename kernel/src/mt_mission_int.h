@@ -40,7 +40,7 @@ void mt_mission_drop_both(mt_mission_t *m);
 /*@ requires MtMissionInv(m) && m->total >= 2 && m->state == MT_MISSION_RUNNING;
     requires 1 <= p <= m->total;
     assigns m->state, m->nav, m->nav_idx, m->prev_nav, m->do_cmd, m->do_idx, m->do_done,
-            m->completions, m->count[0 .. m->total - 1], MtPortNow;
+            m->completions, m->count[0 .. m->total - 1], MtPortNow, MtPortWakes;
     ensures MtMissionInv(m);
     ensures m->state == MT_MISSION_RUNNING || m->state == MT_MISSION_COMPLETE;
     ensures complete_once: m->completions == \old(m->completions) + (m->state == MT_MISSION_COMPLETE ? 1 : 0) ||

@@ -24,7 +24,7 @@
 /*@ requires callable: fn != \null;
     requires cmd: \valid_read(cmd);
     requires callback_id: MtMissionIsCallbackId(cmd->id);
-    assigns MtPortNow;
+    assigns MtPortNow, MtPortWakes;
     ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
 */
 bool mt_mission_invoke_cmd(mt_mission_cmd_fn_t fn, void *ctx, uint16_t index,
@@ -32,7 +32,7 @@ bool mt_mission_invoke_cmd(mt_mission_cmd_fn_t fn, void *ctx, uint16_t index,
 
 /** Call fn(ctx) (the mission-complete callback). */
 /*@ requires callable: fn != \null;
-    assigns MtPortNow;
+    assigns MtPortNow, MtPortWakes;
     ensures time_moves_forward: MtPortNow >= \old(MtPortNow);
 */
 void mt_mission_invoke_done(mt_mission_done_fn_t fn, void *ctx);

@@ -26,8 +26,9 @@ uint32_t mt_wq_is_queued(const mt_wq_t *q, uint32_t s);
 /** Wake the queue's thread (lock held). */
 /*@ requires held: MtLocked == 1;
     requires inv: MtWqInv(q);
-    assigns q->wake;
+    assigns q->wake, MtPortWakes;
     ensures inv: MtWqInv(q);
+    ensures woken: MtWqWoken{Pre, Post}(q);
 */
 void mt_wq_wake_i(mt_wq_t *q);
 
@@ -37,7 +38,7 @@ void mt_wq_wake_i(mt_wq_t *q);
     requires slot: s < q->nitems;
     assigns q->order[0 .. MT_CFG_WQ_MAX_ITEMS - 1], q->where[0 .. MT_CFG_WQ_MAX_ITEMS - 1],
             q->count, q->max_depth, q->slot[s].queued_us, q->slot[s].stats.merged,
-            q->stats.merged, q->wake;
+            q->stats.merged, q->wake, MtPortWakes;
     ensures inv: MtWqInv(q);
     ensures queued: MtWqQueued(q, s);
     ensures fifo_kept: MtWqFifoKept{Pre, Post}(q);
@@ -47,10 +48,16 @@ void mt_wq_wake_i(mt_wq_t *q);
       ensures status: \result == MT_OK;
       ensures tail: q->count == \old(q->count) + 1 && MtWqRel(q, q->where[s]) == \old(q->count);
       ensures stamped: q->slot[s].queued_us == now;
+      ensures depth: MtWqDepth{Pre, Post}(q);
+      ensures not_merged: MtWqMergesKept{Pre, Post}(q, s);
+      ensures woken: MtWqWoken{Pre, Post}(q);
     behavior merge:
       assumes MtWqQueued(q, s);
       ensures status: \result == MT_W_WQ_MERGED;
       ensures same: q->count == \old(q->count);
+      ensures stamp_kept: q->slot[s].queued_us == \old(q->slot[s].queued_us);
+      ensures depth_kept: q->max_depth == \old(q->max_depth);
+      ensures not_woken: MtWqNotWoken{Pre, Post}(q);
       ensures counted: q->slot[s].stats.merged == (\old(q->slot[s].stats.merged) < 0xFFFFFFFF ?
                                                    \old(q->slot[s].stats.merged) + 1 : 0xFFFFFFFF);
       ensures counted_wq: q->stats.merged == (\old(q->stats.merged) < 0xFFFFFFFF ?

@@ -94,7 +94,7 @@ mt_status_t mt_proc_register(mt_proc_set_t *p, mt_proc_fn_t fn, void *arg)
 /*@ requires MtProcSetInv(p);
     requires 0 <= i < p->count;
     requires t0 <= MtPortNow;
-    assigns p->procs[i].calls, p->procs[i].max_us, p->procs[i].total_us, MtPortNow,
+    assigns p->procs[i].calls, p->procs[i].max_us, p->procs[i].total_us, MtPortNow, MtPortWakes,
             MtCalls[MT_CALL_PROC(i)];
     ensures MtProcSetInv(p);
     ensures MtPortNow >= \old(MtPortNow);
@@ -151,7 +151,7 @@ mt_status_t mt_proc_dispatch(mt_proc_set_t *p)
         loop invariant uncalled: \forall integer j; i <= j < MT_CFG_PROC_MAX ==>
             MtCalls[MT_CALL_PROC(j)] == \at(MtCalls[MT_CALL_PROC(j)], LoopEntry);
         loop assigns i, t, p->procs[0 .. MT_CFG_PROC_MAX - 1].calls, p->procs[0 .. MT_CFG_PROC_MAX - 1].max_us,
-                     p->procs[0 .. MT_CFG_PROC_MAX - 1].total_us, MtPortNow,
+                     p->procs[0 .. MT_CFG_PROC_MAX - 1].total_us, MtPortNow, MtPortWakes,
                      MtCalls[MT_CALL_PROC(0) .. MT_CALL_PROC(MT_CFG_PROC_MAX - 1)];
         loop variant n - i;
     */

@@ -290,7 +290,7 @@ static void note_run(mt_sched_t *s, uint32_t i, uint64_t taken_us, uint32_t allo
     requires task: \valid_read(s->tasks + i) && s->tasks[i].fn != \null;
     requires sep: s->ntasks <= MT_CFG_SCHED_MAX_TASKS && \separated(s, s->tasks + (0 .. s->ntasks - 1));
     requires room: s->st[i].runs < s->tick;
-    assigns s->current, s->task_start_us, s->task_allowed_us, MtPortNow,
+    assigns s->current, s->task_start_us, s->task_allowed_us, MtPortNow, MtPortWakes,
             s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us,
             s->st[i].overruns, s->st[i].last_run, MtCalls[MT_CALL_TASK(i)];
     ensures s->current == MT_SCHED_IDLE;
@@ -381,7 +381,7 @@ static void note_skip(mt_sched_t *s, uint32_t i)
     requires room: s->st[i].runs < s->tick;
     requires due: s->st[i].interval >= 1 && s->st[i].last_run <= s->tick &&
                   dt == s->tick - s->st[i].last_run && dt >= s->st[i].interval;
-    assigns s->current, s->task_start_us, s->task_allowed_us, MtPortNow,
+    assigns s->current, s->task_start_us, s->task_allowed_us, MtPortNow, MtPortWakes,
             s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us,
             s->st[i].overruns, s->st[i].last_run, s->st[i].slips, s->st[i].not_achieved,
             s->late_in_loop, MtCalls[MT_CALL_TASK(i)];
@@ -410,7 +410,7 @@ static uint64_t serve(mt_sched_t *s, uint32_t i, uint64_t dt)
     requires spent: (integer)time_available_us - avail <= MtPortNow - start;
     assigns s->st[i].runs, s->st[i].min_us, s->st[i].max_us, s->st[i].total_us, s->st[i].overruns,
             s->st[i].last_run, s->st[i].slips, s->st[i].not_achieved, s->st[i].budget_skips,
-            s->current, s->late_in_loop, s->task_start_us, s->task_allowed_us, MtPortNow,
+            s->current, s->late_in_loop, s->task_start_us, s->task_allowed_us, MtPortNow, MtPortWakes,
             MtCalls[MT_CALL_TASK(i)];
     ensures inv: MtSchedInv(s) && s->run_tick == s->tick;
     ensures kept: MtSchedKept{Pre, Post}(s);
@@ -554,7 +554,7 @@ uint32_t mt_sched_run(mt_sched_t *s, uint32_t time_available_us)
             g_skips[j] == MtSatAdd64(\at(s->st[j].budget_skips, Pre), 1) &&
             g_calls[j] == \at(MtCalls[MT_CALL_TASK(j)], Pre) && \at(s->tasks[j].budget_us, Pre) > avail;
         loop assigns i, avail, s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop,
-                     s->task_start_us, s->task_allowed_us, MtPortNow,
+                     s->task_start_us, s->task_allowed_us, MtPortNow, MtPortWakes,
                      MtCalls[MT_CALL_TASK(0) .. MT_CALL_TASK(MT_CFG_SCHED_MAX_TASKS - 1)],
                      g_runs[0 .. MT_CFG_SCHED_MAX_TASKS - 1], g_last[0 .. MT_CFG_SCHED_MAX_TASKS - 1],
                      g_slips[0 .. MT_CFG_SCHED_MAX_TASKS - 1], g_late[0 .. MT_CFG_SCHED_MAX_TASKS - 1],

@@ -145,6 +145,7 @@ static void note_merge(mt_wq_t *q, uint32_t s)
     assigns q->slot[s].queued_us, q->max_depth;
     ensures inv: MtWqInv(q);
     ensures stamped: q->slot[s].queued_us == now;
+    ensures depth: MtWqDepth{Pre, Post}(q);
 */
 static void note_queued(mt_wq_t *q, uint32_t s, uint64_t now)
 {

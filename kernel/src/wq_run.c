@@ -247,9 +247,10 @@ static void relock_after_run(mt_wq_t *q)
 /*@ requires held: MtLocked == 1;
     requires inv: MtWqInv(q);
     requires slot: s < MT_CFG_WQ_MAX_ITEMS;
-    assigns q->slot[s].shot, q->slot[s].done;
+    assigns q->slot[s].shot, q->slot[s].done, MtPortWakes;
     ensures inv: MtWqInv(q);
     ensures done: q->slot[s].shot == MT_WQ_SHOT_DONE;
+    ensures released: MtSemSignalled{Pre, Post}(&q->slot[s].done);
 */
 static void shot_done_i(mt_wq_t *q, uint32_t s)
 {
@@ -265,7 +266,7 @@ static void shot_done_i(mt_wq_t *q, uint32_t s)
     assigns q->running, q->run_start_us, q->slot[q->running].stats.runs,
             q->slot[q->running].stats.total_run_us, q->slot[q->running].stats.max_run_us,
             q->slot[q->running].shot, q->slot[q->running].done,
-            q->stats.runs, q->stats.total_run_us, q->stats.max_run_us, q->wake, MtPortNow;
+            q->stats.runs, q->stats.total_run_us, q->stats.max_run_us, q->wake, MtPortNow, MtPortWakes;
     ensures inv: MtWqInv(q);
     ensures idle: q->running == MT_WQ_NONE;
     ensures ran: q->slot[\old(q->running)].stats.runs ==
@@ -340,7 +341,7 @@ uint32_t mt_wq_run_pending(mt_wq_t *q, uint32_t max)
         loop invariant after: n > 0 ==> q->running == MT_WQ_NONE;
         loop invariant refused: \at(q->running, Pre) != MT_WQ_NONE ==> n == 0;
         loop invariant ran: q->stats.runs == MtWqAdd64(\at(q->stats.runs, Pre), n);
-        loop assigns n, *q, MtPortNow, MtLocked,
+        loop assigns n, *q, MtPortNow, MtPortWakes, MtLocked,
                      MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
         loop variant max - n;
     */
@@ -407,7 +408,7 @@ void mt_wq_thread_body(void *arg)
 
     /* The queue's thread: no loop variant, it serves until a stop is requested. */
     /*@ loop invariant inv: MtWqInv(q) && MtLocked == 0;
-        loop assigns *q, MtPortNow, MtPortHandoffs, MtLocked,
+        loop assigns *q, MtPortNow, MtPortWakes, MtPortHandoffs, MtLocked,
                      MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     */
     while (mt_wq_serve_once(q) == MT_OK) {
@@ -455,7 +456,7 @@ static void shot_reset(mt_wq_t *q, uint32_t s, uint32_t v)
 /*@ requires held: MtLocked == 1;
     requires inv: MtWqInv(q);
     requires slot: s < q->nitems;
-    assigns *q, MtPortNow, MtPortHandoffs;
+    assigns *q, MtPortNow, MtPortWakes, MtPortHandoffs;
     ensures held: MtLocked == 1;
     ensures inv: MtWqInv(q);
     ensures grown: q->nitems >= \old(q->nitems);

@@ -163,7 +163,7 @@ static uint32_t timer_due(const mt_wq_t *q, uint32_t s, uint64_t now)
     assigns q->order[0 .. MT_CFG_WQ_MAX_ITEMS - 1], q->where[0 .. MT_CFG_WQ_MAX_ITEMS - 1],
             q->count, q->max_depth, q->slot[s].queued_us, q->slot[s].stats.merged,
             q->slot[s].stats.missed, q->slot[s].timer, q->slot[s].deadline_us,
-            q->stats.merged, q->stats.missed, q->wake;
+            q->stats.merged, q->stats.missed, q->wake, MtPortWakes;
     ensures inv: MtWqInv(q);
     ensures queued_kept: \forall integer t; 0 <= t < MT_CFG_WQ_MAX_ITEMS ==>
         \old(MtWqQueued(q, t)) ==> MtWqQueued(q, t);
@@ -223,7 +223,7 @@ uint32_t mt_wq_timer_tick_i(mt_wq_t *q, uint64_t now)
             q->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1].stats.missed,
             q->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1].timer,
             q->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1].deadline_us, q->stats.merged, q->stats.missed,
-            q->wake;
+            q->wake, MtPortWakes;
         loop variant q->nitems - s;
     */
     for (s = 0u; s < q->nitems; s++) {

@@ -229,7 +229,7 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
             t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow,
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtPortWakes,
             MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
     ensures held: MtLocked == 1;
     ensures inv: MtTopicInv(t);
@@ -237,17 +237,15 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
       assumes size != t->size;
       ensures status: \result == MT_E_BUS_MSG_SIZE;
       ensures counted: t->rejected == MtSatInc(\old(t->rejected));
-      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
-                         t->publishes == \old(t->publishes);
-      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+      ensures unchanged: MtPublishKept{Old, Here}(t);
+      ensures nothing_written: MtPublishNothingWritten{Old, Here}(t);
       ensures none_notified: MtPublishNotifiedNone{Old, Here}(t);
     behavior behind:
       assumes size == t->size && MtTopicBehind(t);
       ensures status: \result == MT_E_BUS_BEHIND;
       ensures counted: t->rejected == MtSatInc(\old(t->rejected));
-      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
-                         t->publishes == \old(t->publishes);
-      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+      ensures unchanged: MtPublishKept{Old, Here}(t);
+      ensures nothing_written: MtPublishNothingWritten{Old, Here}(t);
       ensures none_notified: MtPublishNotifiedNone{Old, Here}(t);
     behavior ok:
       assumes size == t->size && !MtTopicBehind(t);
@@ -255,17 +253,14 @@ mt_status_t mt_topic_init(mt_topic_t *t, const mt_topic_desc_t *d, void *storage
       ensures generation: t->gen == MtGenNext(\old(t->gen));
       ensures slot: t->head == MtSlotNext(\old(t->head), t->qlen);
       ensures stamped: t->stamp[t->head] == t->gen;
-      ensures data: \forall integer k; 0 <= k < t->size ==>
-          t->buf[t->head * t->size + k] == ((uint8_t *)msg)[k];
-      ensures others_kept: \forall integer k; 0 <= k < t->size * t->qlen ==>
-          (k < t->head * t->size || k >= t->head * t->size + t->size) ==>
-          t->buf[k] == \old(t->buf[k]);
+      ensures data: MtPublishData(t->buf, t->head * t->size, (uint8_t *)msg, t->size);
+      ensures others_kept: MtPublishOthersKept{Old, Here}(t->buf, t->size * t->qlen,
+                                                          t->head * t->size, t->size);
       ensures published: t->published == 1;
       ensures counted: t->publishes == MtSatInc(\old(t->publishes)) &&
                        t->rejected == \old(t->rejected);
-      ensures notified: \forall integer i; 0 <= i < t->nnotify ==> MtNotifyStep{Old, Here}(t, i);
-      ensures unused_not_called: \forall integer i; t->nnotify <= i < MT_CFG_BUS_MAX_NOTIFY ==>
-          MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]);
+      ensures notified: MtPublishNotified{Old, Here}(t, t->nnotify);
+      ensures unused_not_called: MtPublishUnusedKept{Old, Here}(t->nnotify);
     complete behaviors;
     disjoint behaviors;
 */
@@ -280,41 +275,34 @@ mt_status_t mt_topic_publish_i(mt_topic_t *t, const void *msg, uint32_t size);
             t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked,
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtPortWakes, MtLocked,
             MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtTopicInv(t);
     ensures status: MtPublishStatus(\result);
     ensures generation: MtPublishGeneration{Old, Here}(t, \result);
     ensures refused: MtPublishRefused{Old, Here}(t, \result);
-    ensures notified: \result == MT_OK ==>
-        \forall integer i; 0 <= i < t->nnotify ==> MtNotifyStep{Old, Here}(t, i);
-    ensures unused_not_called: \result == MT_OK ==>
-        \forall integer i; t->nnotify <= i < MT_CFG_BUS_MAX_NOTIFY ==>
-            MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]);
+    ensures notified: \result == MT_OK ==> MtPublishNotified{Old, Here}(t, t->nnotify);
+    ensures unused_not_called: \result == MT_OK ==> MtPublishUnusedKept{Old, Here}(t->nnotify);
     ensures none_notified: \result != MT_OK ==> MtPublishNotifiedNone{Old, Here}(t);
     behavior msg_size:
       assumes size != t->size;
       ensures status: \result == MT_E_BUS_MSG_SIZE;
-      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
-                         t->publishes == \old(t->publishes);
-      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+      ensures unchanged: MtPublishKept{Old, Here}(t);
+      ensures nothing_written: MtPublishNothingWritten{Old, Here}(t);
     behavior behind:
       assumes size == t->size && MtTopicBehind(t);
       ensures status: \result == MT_E_BUS_BEHIND;
-      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
-                         t->publishes == \old(t->publishes);
-      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+      ensures unchanged: MtPublishKept{Old, Here}(t);
+      ensures nothing_written: MtPublishNothingWritten{Old, Here}(t);
     behavior ok:
       assumes size == t->size && !MtTopicBehind(t);
       ensures status: \result == MT_OK;
       ensures slot: t->head == MtSlotNext(\old(t->head), t->qlen);
       ensures stamped: t->stamp[t->head] == t->gen;
-      ensures data: \forall integer k; 0 <= k < t->size ==>
-          t->buf[t->head * t->size + k] == ((uint8_t *)msg)[k];
-      ensures others_kept: \forall integer k; 0 <= k < t->size * t->qlen ==>
-          (k < t->head * t->size || k >= t->head * t->size + t->size) ==>
-          t->buf[k] == \old(t->buf[k]);
+      ensures data: MtPublishData(t->buf, t->head * t->size, (uint8_t *)msg, t->size);
+      ensures others_kept: MtPublishOthersKept{Old, Here}(t->buf, t->size * t->qlen,
+                                                          t->head * t->size, t->size);
       ensures published: t->published == 1;
       ensures counted: t->publishes == MtSatInc(\old(t->publishes)) &&
                        t->rejected == \old(t->rejected);
@@ -332,41 +320,34 @@ mt_status_t mt_topic_publish(mt_topic_t *t, const void *msg, uint32_t size);
             t->notify_last_gen[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_last_us[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
             t->notify_calls[0 .. MT_CFG_BUS_MAX_NOTIFY - 1],
-            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtLocked,
+            t->notify_gated[0 .. MT_CFG_BUS_MAX_NOTIFY - 1], MtPortNow, MtPortWakes, MtLocked,
             MtCalls[MT_CALL_NOTIFY(0) .. MT_CALL_NOTIFY(MT_CFG_BUS_MAX_NOTIFY - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtTopicInv(t);
     ensures status: MtPublishStatus(\result);
     ensures generation: MtPublishGeneration{Old, Here}(t, \result);
     ensures refused: MtPublishRefused{Old, Here}(t, \result);
-    ensures notified: \result == MT_OK ==>
-        \forall integer i; 0 <= i < t->nnotify ==> MtNotifyStep{Old, Here}(t, i);
-    ensures unused_not_called: \result == MT_OK ==>
-        \forall integer i; t->nnotify <= i < MT_CFG_BUS_MAX_NOTIFY ==>
-            MtCalls[MT_CALL_NOTIFY(i)] == \old(MtCalls[MT_CALL_NOTIFY(i)]);
+    ensures notified: \result == MT_OK ==> MtPublishNotified{Old, Here}(t, t->nnotify);
+    ensures unused_not_called: \result == MT_OK ==> MtPublishUnusedKept{Old, Here}(t->nnotify);
     ensures none_notified: \result != MT_OK ==> MtPublishNotifiedNone{Old, Here}(t);
     behavior msg_size:
       assumes size != t->size;
       ensures status: \result == MT_E_BUS_MSG_SIZE;
-      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
-                         t->publishes == \old(t->publishes);
-      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+      ensures unchanged: MtPublishKept{Old, Here}(t);
+      ensures nothing_written: MtPublishNothingWritten{Old, Here}(t);
     behavior behind:
       assumes size == t->size && MtTopicBehind(t);
       ensures status: \result == MT_E_BUS_BEHIND;
-      ensures unchanged: t->gen == \old(t->gen) && t->head == \old(t->head) &&
-                         t->publishes == \old(t->publishes);
-      ensures nothing_written: \forall integer k; 0 <= k < t->size * t->qlen ==> t->buf[k] == \old(t->buf[k]);
+      ensures unchanged: MtPublishKept{Old, Here}(t);
+      ensures nothing_written: MtPublishNothingWritten{Old, Here}(t);
     behavior ok:
       assumes size == t->size && !MtTopicBehind(t);
       ensures status: \result == MT_OK;
       ensures slot: t->head == MtSlotNext(\old(t->head), t->qlen);
       ensures stamped: t->stamp[t->head] == t->gen;
-      ensures data: \forall integer k; 0 <= k < t->size ==>
-          t->buf[t->head * t->size + k] == ((uint8_t *)msg)[k];
-      ensures others_kept: \forall integer k; 0 <= k < t->size * t->qlen ==>
-          (k < t->head * t->size || k >= t->head * t->size + t->size) ==>
-          t->buf[k] == \old(t->buf[k]);
+      ensures data: MtPublishData(t->buf, t->head * t->size, (uint8_t *)msg, t->size);
+      ensures others_kept: MtPublishOthersKept{Old, Here}(t->buf, t->size * t->qlen,
+                                                          t->head * t->size, t->size);
       ensures published: t->published == 1;
       ensures counted: t->publishes == MtSatInc(\old(t->publishes)) &&
                        t->rejected == \old(t->rejected);

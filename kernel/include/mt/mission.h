@@ -350,7 +350,7 @@ mt_status_t mt_mission_load(mt_mission_t *m, const mt_mission_cmd_t *cmds, uint1
                    mt_mission_scratch_target + (0 .. MT_CFG_MISSION_MAX_CMDS - 1));
     requires bad: \valid(bad);
     assigns *m, *bad, mt_mission_scratch_safe[0 .. MT_CFG_MISSION_MAX_CMDS - 1],
-            mt_mission_scratch_target[0 .. MT_CFG_MISSION_MAX_CMDS - 1], MtPortNow;
+            mt_mission_scratch_target[0 .. MT_CFG_MISSION_MAX_CMDS - 1], MtPortNow, MtPortWakes;
     ensures inv: MtMissionInv(m);
     behavior not_running:
       assumes m->state != MT_MISSION_RUNNING;
@@ -381,7 +381,7 @@ mt_status_t mt_mission_replace(mt_mission_t *m, const mt_mission_cmd_t *cmds, ui
  *  @retval MT_OK
  *  @retval MT_E_EMPTY no command besides home (nothing changes) */
 /*@ requires inv: MtMissionInv(m);
-    assigns *m, MtPortNow;
+    assigns *m, MtPortNow, MtPortWakes;
     ensures inv: MtMissionInv(m);
     behavior empty:
       assumes m->total < 2;
@@ -424,7 +424,7 @@ mt_status_t mt_mission_stop(mt_mission_t *m);
  *  @retval MT_E_STATE already running (nothing changes)
  *  @retval MT_E_EMPTY no command besides home (nothing changes) */
 /*@ requires inv: MtMissionInv(m);
-    assigns *m, MtPortNow;
+    assigns *m, MtPortNow, MtPortWakes;
     ensures inv: MtMissionInv(m);
     behavior running:
       assumes m->state == MT_MISSION_RUNNING;
@@ -456,7 +456,7 @@ mt_status_t mt_mission_resume(mt_mission_t *m);
  *          command at or after i (nothing changes)
  *  @retval MT_E_INVALID i >= count (nothing changes) */
 /*@ requires inv: MtMissionInv(m);
-    assigns *m, MtPortNow;
+    assigns *m, MtPortNow, MtPortWakes;
     ensures inv: MtMissionInv(m);
     behavior empty:
       assumes m->total < 2;
@@ -488,7 +488,7 @@ mt_status_t mt_mission_set_current(mt_mission_t *m, uint16_t i);
  *  @retval MT_OK
  *  @retval MT_E_STATE not running, or no nav command set (nothing changes) */
 /*@ requires inv: MtMissionInv(m);
-    assigns *m, MtPortNow;
+    assigns *m, MtPortNow, MtPortWakes;
     ensures inv: MtMissionInv(m);
     behavior active:
       assumes m->state == MT_MISSION_RUNNING && m->nav_idx != MT_MISSION_NONE;
@@ -511,7 +511,7 @@ mt_status_t mt_mission_restart_current(mt_mission_t *m);
  *  @retval MT_OK
  *  @retval MT_E_STATE not running (nothing changes) */
 /*@ requires inv: MtMissionInv(m);
-    assigns *m, MtPortNow;
+    assigns *m, MtPortNow, MtPortWakes;
     ensures inv: MtMissionInv(m);
     behavior running:
       assumes m->state == MT_MISSION_RUNNING;

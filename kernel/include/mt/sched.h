@@ -357,7 +357,7 @@ void mt_sched_tick(mt_sched_t *s);
  *  nothing, so no task runs twice in one tick. */
 /*@ requires inv: MtSchedInv(s);
     assigns s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop, s->run_tick,
-            s->task_start_us, s->task_allowed_us, MtPortNow,
+            s->task_start_us, s->task_allowed_us, MtPortNow, MtPortWakes,
             MtCalls[MT_CALL_TASK(0) .. MT_CALL_TASK(MT_CFG_SCHED_MAX_TASKS - 1)];
     ensures inv: MtSchedInv(s);
     ensures idle: \old(s->current) == MT_SCHED_IDLE ==> s->current == MT_SCHED_IDLE;
@@ -416,7 +416,7 @@ void mt_sched_note_sample(mt_sched_t *s, uint64_t sample_us);
     assigns s->st[0 .. MT_CFG_SCHED_MAX_TASKS - 1], s->current, s->late_in_loop, s->tick,
             s->run_tick, s->task_start_us, s->task_allowed_us, s->spare_us, s->spare_ticks, s->extra_us,
             s->clean_loops, s->loops, s->loop_total_us, s->loop_min_us, s->loop_max_us,
-            s->long_loops, s->last_sample_us, s->filtered_loop_q8, MtPortNow,
+            s->long_loops, s->last_sample_us, s->filtered_loop_q8, MtPortNow, MtPortWakes,
             MtCalls[MT_CALL_TASK(0) .. MT_CALL_TASK(MT_CFG_SCHED_MAX_TASKS - 1)], MtCalls[MT_CALL_WAIT];
     ensures inv: MtSchedInv(s);
     ensures ticked: s->tick == \old(s->tick) + 1;

@@ -46,12 +46,14 @@ typedef struct {
  * L1 and L2:
  * - MtSemTook: the caller took the available token (none left; the waiter is kept);
  * - MtSemKept: the token and the waiter are unchanged;
- * - MtSemHandedOver: the parked waiter was resumed with the token, which never became
- *   available, and no merge was counted;
- * - MtSemSet: the token was set, no merge counted;
+ * - MtSemHandedOver: the parked waiter was resumed with the token (the port delivered a
+ *   wake-up: MtPortWakes moved), which never became available, and no merge was counted;
+ * - MtSemSet: the token was set, no merge counted, nobody resumed;
  * - MtSemMerged: the token was already set and stays set; the merge is counted
- *   (saturating).
- * A signal meets exactly one of the last three: it never loses a token. MtSemSignalled and
+ *   (saturating), nobody resumed.
+ * A signal meets exactly one of the last three: it never loses a token. MtSemUnsignalled:
+ * no signal was given (token, waiter and merge count unchanged, nobody resumed).
+ * MtSemSignalled and
  * MtSemWaited state a whole signal and a whole wait (timeout t, result r) case by case, as the
  * behaviors of mt_sem_signal_i and mt_sem_wait_s do; the task and ISR forms use them. */
 /*@ predicate MtSemAvailable(mt_sem_t *s) = s->token == 1;
@@ -65,14 +67,21 @@ typedef struct {
 
     predicate MtSemHandedOver{L1, L2}(mt_sem_t *s) =
         !\at(MtSemAvailable(s), L2) && !\at(MtSemParked(s), L2) &&
-        \at(s->merged, L2) == \at(s->merged, L1);
+        \at(s->merged, L2) == \at(s->merged, L1) &&
+        \at(MtPortWakes, L2) != \at(MtPortWakes, L1);
     predicate MtSemSet{L1, L2}(mt_sem_t *s) =
         \at(MtSemAvailable(s), L2) && !\at(MtSemParked(s), L2) &&
-        \at(s->merged, L2) == \at(s->merged, L1);
+        \at(s->merged, L2) == \at(s->merged, L1) &&
+        \at(MtPortWakes, L2) == \at(MtPortWakes, L1);
     predicate MtSemMerged{L1, L2}(mt_sem_t *s) =
         \at(MtSemAvailable(s), L2) && !\at(MtSemParked(s), L2) &&
+        \at(MtPortWakes, L2) == \at(MtPortWakes, L1) &&
         \at(s->merged, L2) == (\at(s->merged, L1) < 0xFFFFFFFF ? \at(s->merged, L1) + 1
                                                                  : \at(s->merged, L1));
+
+    predicate MtSemUnsignalled{L1, L2}(mt_sem_t *s) =
+        MtSemKept{L1, L2}(s) && \at(s->merged, L2) == \at(s->merged, L1) &&
+        \at(MtPortWakes, L2) == \at(MtPortWakes, L1);
 
     predicate MtSemSignalled{L1, L2}(mt_sem_t *s) =
         (\at(MtSemParked(s), L1) ==> MtSemHandedOver{L1, L2}(s)) &&
@@ -149,10 +158,11 @@ mt_status_t mt_sem_wait_s(mt_sem_t *s, uint64_t timeout_us);
 mt_status_t mt_sem_wait(mt_sem_t *s, uint64_t timeout_us);
 
 /** Give the token. I-class: kernel lock held (task or ISR). A parked waiter is resumed
- *  with it; else the token is set; else (already set) the merge is counted. */
+ *  with it (the port delivers a wake-up); else the token is set; else (already set) the
+ *  merge is counted. */
 /*@ requires held: MtLocked == 1;
     requires inv: MtSemInv(s);
-    assigns s->token, s->waiter, s->merged;
+    assigns s->token, s->waiter, s->merged, MtPortWakes;
     ensures inv: MtSemInv(s);
     behavior handoff:
       assumes MtSemParked(s);
@@ -171,7 +181,7 @@ void mt_sem_signal_i(mt_sem_t *s);
 /** mt_sem_signal_i() from task context: the same outcomes. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtSemInv(s);
-    assigns s->token, s->waiter, s->merged, MtLocked;
+    assigns s->token, s->waiter, s->merged, MtPortWakes, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtSemInv(s);
     ensures given: MtSemSignalled{Pre, Post}(s);
@@ -181,7 +191,7 @@ void mt_sem_signal(mt_sem_t *s);
 /** mt_sem_signal_i() from an interrupt handler: the same outcomes. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtSemInv(s);
-    assigns s->token, s->waiter, s->merged, MtLocked;
+    assigns s->token, s->waiter, s->merged, MtPortWakes, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtSemInv(s);
     ensures given: MtSemSignalled{Pre, Post}(s);

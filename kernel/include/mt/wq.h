@@ -197,6 +197,25 @@ void mt_wq_init(mt_wq_t *q, const char *name, mt_prio_base_t base, int8_t offset
 */
 void mt_work_init(mt_work_t *w, mt_work_fn_t fn, void *arg);
 
+/* What mt_wq_attach_i and mt_wq_attach state alike, from L1 (the call) to L2 (its return):
+ * MtWqAttachKept  a refusal: the queue's item count and the item's queue unchanged;
+ * MtWqAppended    the item is attached to q at the slot after the last, one more item;
+ * MtWqSlotEntry   its slot holds the item's function and argument;
+ * MtWqSlotNoWaiter  its single-shot semaphore has no token and no waiter. */
+/*@ predicate MtWqAttachKept{L1, L2}(mt_wq_t *q, mt_work_t *w) =
+        \at(q->nitems, L2) == \at(q->nitems, L1) && \at(w->wq, L2) == \at(w->wq, L1);
+
+    predicate MtWqAppended{L1, L2}(mt_wq_t *q, mt_work_t *w) =
+        \at(w->wq, L2) == q && \at(w->slot, L2) == \at(q->nitems, L1) &&
+        \at(q->nitems, L2) == \at(q->nitems, L1) + 1;
+
+    predicate MtWqSlotEntry(mt_wq_t *q, mt_work_t *w) =
+        q->slot[w->slot].fn == w->fn && q->slot[w->slot].arg == w->arg;
+
+    predicate MtWqSlotNoWaiter(mt_wq_t *q, integer k) =
+        q->slot[k].done.token == 0 && q->slot[k].done.waiter == \null;
+*/
+
 /** Attach an item to a queue (the lock-held core of mt_wq_attach). I-class.
  *  @retval MT_OK attached to slot nitems - 1, idle, statistics zero.
  *  @retval MT_E_INVALID the item has no run function.
@@ -211,24 +230,24 @@ void mt_work_init(mt_work_t *w, mt_work_fn_t fn, void *arg);
     behavior invalid:
       assumes w->fn == \null;
       ensures status: \result == MT_E_INVALID;
-      ensures unchanged: q->nitems == \old(q->nitems) && w->wq == \old(w->wq);
+      ensures unchanged: MtWqAttachKept{Pre, Post}(q, w);
     behavior duplicate:
       assumes w->fn != \null && w->wq != \null;
       ensures status: \result == MT_E_DUPLICATE;
-      ensures unchanged: q->nitems == \old(q->nitems) && w->wq == \old(w->wq);
+      ensures unchanged: MtWqAttachKept{Pre, Post}(q, w);
     behavior full:
       assumes w->fn != \null && w->wq == \null && q->nitems == MT_CFG_WQ_MAX_ITEMS;
       ensures status: \result == MT_E_FULL;
-      ensures unchanged: q->nitems == \old(q->nitems) && w->wq == \null;
+      ensures unchanged: MtWqAttachKept{Pre, Post}(q, w);
     behavior ok:
       assumes w->fn != \null && w->wq == \null && q->nitems < MT_CFG_WQ_MAX_ITEMS;
       ensures status: \result == MT_OK;
-      ensures attached: w->wq == q && w->slot == \old(q->nitems) && q->nitems == \old(q->nitems) + 1;
+      ensures attached: MtWqAppended{Pre, Post}(q, w);
       ensures item: MtWorkAttached(w);
-      ensures entry: q->slot[w->slot].fn == w->fn && q->slot[w->slot].arg == w->arg;
+      ensures entry: MtWqSlotEntry(q, w);
       ensures idle: MtWqSlotIdle(q, w->slot);
       ensures fresh: MtWqStatsFresh(&q->slot[w->slot].stats);
-      ensures no_waiter: q->slot[w->slot].done.token == 0 && q->slot[w->slot].done.waiter == \null;
+      ensures no_waiter: MtWqSlotNoWaiter(q, w->slot);
     complete behaviors;
     disjoint behaviors;
 */
@@ -245,24 +264,24 @@ mt_status_t mt_wq_attach_i(mt_wq_t *q, mt_work_t *w);
     behavior invalid:
       assumes w->fn == \null;
       ensures status: \result == MT_E_INVALID;
-      ensures unchanged: q->nitems == \old(q->nitems) && w->wq == \old(w->wq);
+      ensures unchanged: MtWqAttachKept{Pre, Post}(q, w);
     behavior duplicate:
       assumes w->fn != \null && w->wq != \null;
       ensures status: \result == MT_E_DUPLICATE;
-      ensures unchanged: q->nitems == \old(q->nitems) && w->wq == \old(w->wq);
+      ensures unchanged: MtWqAttachKept{Pre, Post}(q, w);
     behavior full:
       assumes w->fn != \null && w->wq == \null && q->nitems == MT_CFG_WQ_MAX_ITEMS;
       ensures status: \result == MT_E_FULL;
-      ensures unchanged: q->nitems == \old(q->nitems) && w->wq == \null;
+      ensures unchanged: MtWqAttachKept{Pre, Post}(q, w);
     behavior ok:
       assumes w->fn != \null && w->wq == \null && q->nitems < MT_CFG_WQ_MAX_ITEMS;
       ensures status: \result == MT_OK;
-      ensures attached: w->wq == q && w->slot == \old(q->nitems) && q->nitems == \old(q->nitems) + 1;
+      ensures attached: MtWqAppended{Pre, Post}(q, w);
       ensures item: MtWorkAttached(w);
-      ensures entry: q->slot[w->slot].fn == w->fn && q->slot[w->slot].arg == w->arg;
+      ensures entry: MtWqSlotEntry(q, w);
       ensures idle: MtWqSlotIdle(q, w->slot);
       ensures fresh: MtWqStatsFresh(&q->slot[w->slot].stats);
-      ensures no_waiter: q->slot[w->slot].done.token == 0 && q->slot[w->slot].done.waiter == \null;
+      ensures no_waiter: MtWqSlotNoWaiter(q, w->slot);
     complete behaviors;
     disjoint behaviors;
 */
@@ -276,7 +295,7 @@ mt_status_t mt_wq_attach(mt_wq_t *q, mt_work_t *w);
     requires item: MtWorkAttached(w);
     assigns w->wq->order[0 .. MT_CFG_WQ_MAX_ITEMS - 1], w->wq->where[0 .. MT_CFG_WQ_MAX_ITEMS - 1],
             w->wq->count, w->wq->max_depth, w->wq->slot[w->slot].queued_us,
-            w->wq->slot[w->slot].stats.merged, w->wq->stats.merged, w->wq->wake, MtPortNow;
+            w->wq->slot[w->slot].stats.merged, w->wq->stats.merged, w->wq->wake, MtPortNow, MtPortWakes;
     ensures item: MtWorkAttached(w);
     ensures queued: MtWqQueued(w->wq, w->slot);
     ensures fifo_kept: MtWqFifoKept{Pre, Post}(w->wq);
@@ -287,13 +306,17 @@ mt_status_t mt_wq_attach(mt_wq_t *q, mt_work_t *w);
       ensures status: \result == MT_OK;
       ensures tail: MtWorkAppended{Pre, Post}(w);
       ensures stamped: w->wq->slot[w->slot].queued_us == MtPortNow;
+      ensures depth: MtWqDepth{Pre, Post}(w->wq);
+      ensures not_merged: MtWqMergesKept{Pre, Post}(w->wq, w->slot);
+      ensures woken: MtWqWoken{Pre, Post}(w->wq);
     behavior merge:
       assumes MtWqQueued(w->wq, w->slot);
       ensures status: \result == MT_W_WQ_MERGED;
       ensures same: w->wq->count == \old(w->wq->count);
-      ensures counted: w->wq->slot[w->slot].stats.merged ==
-                       MtWqInc32(\old(w->wq->slot[w->slot].stats.merged));
-      ensures counted_wq: w->wq->stats.merged == MtWqInc32(\old(w->wq->stats.merged));
+      ensures counted: MtWqMergesCounted{Pre, Post}(w->wq, w->slot);
+      ensures stamp_kept: w->wq->slot[w->slot].queued_us == \old(w->wq->slot[w->slot].queued_us);
+      ensures depth_kept: w->wq->max_depth == \old(w->wq->max_depth);
+      ensures not_woken: MtWqNotWoken{Pre, Post}(w->wq);
     complete behaviors;
     disjoint behaviors;
 */
@@ -304,12 +327,33 @@ mt_status_t mt_work_schedule_i(mt_work_t *w);
     requires item: MtWorkAttached(w);
     assigns w->wq->order[0 .. MT_CFG_WQ_MAX_ITEMS - 1], w->wq->where[0 .. MT_CFG_WQ_MAX_ITEMS - 1],
             w->wq->count, w->wq->max_depth, w->wq->slot[w->slot].queued_us,
-            w->wq->slot[w->slot].stats.merged, w->wq->stats.merged, w->wq->wake, MtPortNow, MtLocked;
+            w->wq->slot[w->slot].stats.merged, w->wq->stats.merged, w->wq->wake, MtPortNow, MtPortWakes, MtLocked;
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
     ensures queued: MtWqQueued(w->wq, w->slot);
     ensures status: MtWqScheduleStatus(\result);
     ensures merged: MtWorkMerged{Pre, Post}(w, \result);
+    ensures fifo_kept: MtWqFifoKept{Pre, Post}(w->wq);
+    ensures others_idle: MtWqIdleKept{Pre, Post}(w->wq, w->slot);
+    ensures time: MtPortNow >= \old(MtPortNow);
+    behavior queue:
+      assumes !MtWqQueued(w->wq, w->slot);
+      ensures status: \result == MT_OK;
+      ensures tail: MtWorkAppended{Pre, Post}(w);
+      ensures stamped: w->wq->slot[w->slot].queued_us == MtPortNow;
+      ensures depth: MtWqDepth{Pre, Post}(w->wq);
+      ensures not_merged: MtWqMergesKept{Pre, Post}(w->wq, w->slot);
+      ensures woken: MtWqWoken{Pre, Post}(w->wq);
+    behavior merge:
+      assumes MtWqQueued(w->wq, w->slot);
+      ensures status: \result == MT_W_WQ_MERGED;
+      ensures same: w->wq->count == \old(w->wq->count);
+      ensures counted: MtWqMergesCounted{Pre, Post}(w->wq, w->slot);
+      ensures stamp_kept: w->wq->slot[w->slot].queued_us == \old(w->wq->slot[w->slot].queued_us);
+      ensures depth_kept: w->wq->max_depth == \old(w->wq->max_depth);
+      ensures not_woken: MtWqNotWoken{Pre, Post}(w->wq);
+    complete behaviors;
+    disjoint behaviors;
 */
 mt_status_t mt_work_schedule(mt_work_t *w);
 
@@ -318,12 +362,33 @@ mt_status_t mt_work_schedule(mt_work_t *w);
     requires item: MtWorkAttached(w);
     assigns w->wq->order[0 .. MT_CFG_WQ_MAX_ITEMS - 1], w->wq->where[0 .. MT_CFG_WQ_MAX_ITEMS - 1],
             w->wq->count, w->wq->max_depth, w->wq->slot[w->slot].queued_us,
-            w->wq->slot[w->slot].stats.merged, w->wq->stats.merged, w->wq->wake, MtPortNow, MtLocked;
+            w->wq->slot[w->slot].stats.merged, w->wq->stats.merged, w->wq->wake, MtPortNow, MtPortWakes, MtLocked;
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
     ensures queued: MtWqQueued(w->wq, w->slot);
     ensures status: MtWqScheduleStatus(\result);
     ensures merged: MtWorkMerged{Pre, Post}(w, \result);
+    ensures fifo_kept: MtWqFifoKept{Pre, Post}(w->wq);
+    ensures others_idle: MtWqIdleKept{Pre, Post}(w->wq, w->slot);
+    ensures time: MtPortNow >= \old(MtPortNow);
+    behavior queue:
+      assumes !MtWqQueued(w->wq, w->slot);
+      ensures status: \result == MT_OK;
+      ensures tail: MtWorkAppended{Pre, Post}(w);
+      ensures stamped: w->wq->slot[w->slot].queued_us == MtPortNow;
+      ensures depth: MtWqDepth{Pre, Post}(w->wq);
+      ensures not_merged: MtWqMergesKept{Pre, Post}(w->wq, w->slot);
+      ensures woken: MtWqWoken{Pre, Post}(w->wq);
+    behavior merge:
+      assumes MtWqQueued(w->wq, w->slot);
+      ensures status: \result == MT_W_WQ_MERGED;
+      ensures same: w->wq->count == \old(w->wq->count);
+      ensures counted: MtWqMergesCounted{Pre, Post}(w->wq, w->slot);
+      ensures stamp_kept: w->wq->slot[w->slot].queued_us == \old(w->wq->slot[w->slot].queued_us);
+      ensures depth_kept: w->wq->max_depth == \old(w->wq->max_depth);
+      ensures not_woken: MtWqNotWoken{Pre, Post}(w->wq);
+    complete behaviors;
+    disjoint behaviors;
 */
 mt_status_t mt_work_schedule_isr(mt_work_t *w);
 
@@ -337,7 +402,7 @@ mt_status_t mt_work_schedule_isr(mt_work_t *w);
             ((mt_work_t *)item)->wq->count, ((mt_work_t *)item)->wq->max_depth,
             ((mt_work_t *)item)->wq->slot[((mt_work_t *)item)->slot].queued_us,
             ((mt_work_t *)item)->wq->slot[((mt_work_t *)item)->slot].stats.merged,
-            ((mt_work_t *)item)->wq->stats.merged, ((mt_work_t *)item)->wq->wake, MtPortNow;
+            ((mt_work_t *)item)->wq->stats.merged, ((mt_work_t *)item)->wq->wake, MtPortNow, MtPortWakes;
     ensures item: MtWorkAttached((mt_work_t *)item);
     ensures queued: MtWqQueued(((mt_work_t *)item)->wq, ((mt_work_t *)item)->slot);
 */
@@ -351,7 +416,7 @@ void mt_work_notify_i(void *item);
  *  @retval MT_E_BUSY another runner's run is in progress (refused, counted). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    assigns *q, MtPortNow, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
+    assigns *q, MtPortNow, MtPortWakes, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     ensures items_kept: MtWqItemsKept{Pre, Post}(q);
@@ -390,7 +455,7 @@ mt_status_t mt_wq_run_once(mt_wq_t *q);
  *  counted unless max is 0). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    assigns *q, MtPortNow, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
+    assigns *q, MtPortNow, MtPortWakes, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     ensures bounded: \result <= max;
@@ -418,7 +483,7 @@ uint32_t mt_wq_run_pending(mt_wq_t *q, uint32_t max);
  *  @retval MT_E_BUSY another thread already waits on this queue. */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    assigns *q, MtPortNow, MtPortHandoffs, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
+    assigns *q, MtPortNow, MtPortWakes, MtPortHandoffs, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     behavior stop:
@@ -437,7 +502,7 @@ mt_status_t mt_wq_serve_once(mt_wq_t *q);
  *  not terminate unless a stop is requested (no loop variant). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv((mt_wq_t *)arg);
-    assigns *((mt_wq_t *)arg), MtPortNow, MtPortHandoffs, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
+    assigns *((mt_wq_t *)arg), MtPortNow, MtPortWakes, MtPortHandoffs, MtLocked, MtCalls[MT_CALL_WORK(0) .. MT_CALL_WORK(MT_CFG_WQ_MAX_ITEMS - 1)];
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv((mt_wq_t *)arg);
 */
@@ -446,10 +511,11 @@ void mt_wq_thread_body(void *arg);
 /** Ask the queue's thread to return (it finishes the run in progress). */
 /*@ requires not_held: MtLocked == 0;
     requires inv: MtWqInv(q);
-    assigns q->stop, q->wake, MtLocked;
+    assigns q->stop, q->wake, MtPortWakes, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv(q);
     ensures stopping: q->stop == 1;
+    ensures woken: MtWqWoken{Pre, Post}(q);
 */
 void mt_wq_request_stop(mt_wq_t *q);
 
@@ -462,7 +528,7 @@ void mt_wq_request_stop(mt_wq_t *q);
  *  @retval MT_E_BUSY another caller is already waiting for this item. */
 /*@ requires not_held: MtLocked == 0;
     requires item: MtWorkAttached(w);
-    assigns *(w->wq), MtPortNow, MtPortHandoffs, MtLocked;
+    assigns *(w->wq), MtPortNow, MtPortWakes, MtPortHandoffs, MtLocked;
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
     behavior busy:

@@ -16,6 +16,16 @@
 extern "C" {
 #endif
 
+/* What the I-class and task forms of the timer calls state alike: the item's deadline is
+ * delay_us after the clock reading the call took (MtWorkDeadline); an interval timer runs
+ * every period_us (MtWorkEvery). */
+/*@ predicate MtWorkDeadline(mt_work_t *w, integer delay_us) =
+        w->wq->slot[w->slot].deadline_us == MtWqAfter(MtPortNow, delay_us);
+
+    predicate MtWorkEvery(mt_work_t *w, integer period_us) =
+        MtWorkTimer(w, MT_WQ_TIMER_EVERY) && w->wq->slot[w->slot].period_us == period_us;
+*/
+
 /** Activate the item once, delay_us from now (0: at the next timer tick),
  *  replacing any timer it had. I-class. */
 /*@ requires held: MtLocked == 1;
@@ -23,7 +33,7 @@ extern "C" {
     assigns w->wq->slot[w->slot].timer, w->wq->slot[w->slot].deadline_us, MtPortNow;
     ensures item: MtWorkAttached(w);
     ensures armed: MtWorkTimer(w, MT_WQ_TIMER_ONCE);
-    ensures deadline: w->wq->slot[w->slot].deadline_us == MtWqAfter(MtPortNow, delay_us);
+    ensures deadline: MtWorkDeadline(w, delay_us);
     ensures time: MtPortNow >= \old(MtPortNow);
 */
 void mt_work_schedule_delayed_i(mt_work_t *w, uint32_t delay_us);
@@ -35,7 +45,7 @@ void mt_work_schedule_delayed_i(mt_work_t *w, uint32_t delay_us);
     ensures released: MtLocked == 0;
     ensures item: MtWorkAttached(w);
     ensures armed: MtWorkTimer(w, MT_WQ_TIMER_ONCE);
-    ensures deadline: w->wq->slot[w->slot].deadline_us == MtWqAfter(MtPortNow, delay_us);
+    ensures deadline: MtWorkDeadline(w, delay_us);
     ensures time: MtPortNow >= \old(MtPortNow);
 */
 void mt_work_schedule_delayed(mt_work_t *w, uint32_t delay_us);
@@ -56,8 +66,8 @@ void mt_work_schedule_delayed(mt_work_t *w, uint32_t delay_us);
     behavior ok:
       assumes period_us >= 1;
       ensures status: \result == MT_OK;
-      ensures armed: MtWorkTimer(w, MT_WQ_TIMER_EVERY) && w->wq->slot[w->slot].period_us == period_us;
-      ensures deadline: w->wq->slot[w->slot].deadline_us == MtWqAfter(MtPortNow, delay_us);
+      ensures armed: MtWorkEvery(w, period_us);
+      ensures deadline: MtWorkDeadline(w, delay_us);
     complete behaviors;
     disjoint behaviors;
 */
@@ -77,8 +87,8 @@ mt_status_t mt_work_schedule_interval_i(mt_work_t *w, uint32_t period_us, uint32
     behavior ok:
       assumes period_us >= 1;
       ensures status: \result == MT_OK;
-      ensures armed: MtWorkTimer(w, MT_WQ_TIMER_EVERY) && w->wq->slot[w->slot].period_us == period_us;
-      ensures deadline: w->wq->slot[w->slot].deadline_us == MtWqAfter(MtPortNow, delay_us);
+      ensures armed: MtWorkEvery(w, period_us);
+      ensures deadline: MtWorkDeadline(w, delay_us);
     complete behaviors;
     disjoint behaviors;
 */
@@ -133,7 +143,7 @@ mt_status_t mt_work_cancel(mt_work_t *w);
             q->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1].stats.missed,
             q->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1].timer,
             q->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1].deadline_us,
-            q->stats.merged, q->stats.missed, q->wake, MtPortNow;
+            q->stats.merged, q->stats.missed, q->wake, MtPortNow, MtPortWakes;
     ensures inv: MtWqInv(q);
     ensures bounded: \result <= q->nitems;
     ensures due_queued: MtWqTickDueQueued{Pre, Post}(q, now);
@@ -158,7 +168,7 @@ uint32_t mt_wq_timer_tick_i(mt_wq_t *q, uint64_t now);
             ((mt_wq_t *)arg)->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1].timer,
             ((mt_wq_t *)arg)->slot[0 .. MT_CFG_WQ_MAX_ITEMS - 1].deadline_us,
             ((mt_wq_t *)arg)->stats.merged, ((mt_wq_t *)arg)->stats.missed,
-            ((mt_wq_t *)arg)->wake, MtPortNow, MtLocked;
+            ((mt_wq_t *)arg)->wake, MtPortNow, MtPortWakes, MtLocked;
     ensures released: MtLocked == 0;
     ensures inv: MtWqInv((mt_wq_t *)arg);
 */

@@ -10,8 +10,9 @@
 /*@ requires held: MtLocked == 1;
     requires inv: MtSemInv(s);
     requires nobody: s->waiter == \null;
-    assigns s->token, s->waiter, s->merged, MtPortNow, MtPortHandoffs;
+    assigns s->token, s->waiter, s->merged, MtPortNow, MtPortHandoffs, MtPortWakes;
     ensures taken: \result == MT_OK && s->token == 0;
+    ensures nobody_woken: MtPortWakes == \old(MtPortWakes);
 */
 mt_status_t law_sem_signal_then_poll(mt_sem_t *s)
 {
@@ -23,7 +24,7 @@ mt_status_t law_sem_signal_then_poll(mt_sem_t *s)
 /*@ requires held: MtLocked == 1;
     requires inv: MtSemInv(s);
     requires nobody: s->waiter == \null;
-    assigns s->token, s->waiter, s->merged, MtPortNow, MtPortHandoffs;
+    assigns s->token, s->waiter, s->merged, MtPortNow, MtPortHandoffs, MtPortWakes;
     ensures one_token: \result == MT_E_TIMEOUT && s->token == 0;
     ensures merge_counted: s->merged >= \old(s->merged);
 */
