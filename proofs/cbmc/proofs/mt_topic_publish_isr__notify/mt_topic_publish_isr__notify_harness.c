@@ -1,0 +1,26 @@
+/* SPDX-License-Identifier: Apache-2.0 */
+/* CBMC proof: mt_topic_publish_isr against the notifier clauses of its ACSL contract (CLAUSES in the
+ * Makefile; kernel/include/mt/bus.h), translated by tools/acsl2cbmc.py into
+ * mt_topic_publish_isr_contract.h, included here through mt_topic_publish_isr__notify_contract.h.
+ * Shape: nondeterministic objects, assume the requires, snapshot, call, assert the selected
+ * ensures; MTC_REACH lines are coverage witnesses that the harness admits the extreme values
+ * named. Configuration: BUS_CBMC_CFG (proofs/cbmc/Makefile.common, assumption B7). */
+#include "mtc_objects.h"
+#include "mt_topic_publish_isr__notify_contract.h"
+
+void harness(void)
+{
+    mt_topic_t *t = mtc_topic();
+    uint32_t size = mtc_nondet_u32();
+    uint8_t *msg = mtc_bytes(t->size);
+    mtc_ghosts_nondet();
+
+    __CPROVER_assume(mtc_pre_mt_topic_publish_isr(t, msg, size));
+    mtc_snapshot();
+    mt_status_t res = mt_topic_publish_isr(t, msg, size);
+    mtc_post_mt_topic_publish_isr(t, msg, size, res);
+
+    MTC_REACH(res == MT_OK && MTC_OLDV(t->gen) == 0xFFFFFFFFu && t->nnotify == MT_CFG_BUS_MAX_NOTIFY);
+    MTC_REACH(res == MT_E_BUS_BEHIND && t->rejected == 0xFFFFFFFFu);
+    MTC_REACH(res == MT_E_BUS_MSG_SIZE && size == 0u);
+}
