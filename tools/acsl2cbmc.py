@@ -51,7 +51,6 @@ stops the tool with an error naming the file, function and construct: no clause 
 """
 
 import argparse
-import hashlib
 import json
 import os
 import re
@@ -2709,23 +2708,6 @@ def gen_contract(prog, tr, fc, kinds):
 
 
 MTC_MAX_OBJS = 6
-
-
-def split_proofs(root):
-    """{proof folder: function} for the CBMC proof folders whose Makefile names the function
-    under proof (FUNCTION = f) apart from the folder's own name."""
-    out = {}
-    base = os.path.join(root, "proofs", "cbmc", "proofs")
-    if not os.path.isdir(base):
-        return out
-    for d in sorted(os.listdir(base)):
-        mk = os.path.join(base, d, "Makefile")
-        if os.path.exists(mk):
-            with open(mk, encoding="utf-8") as f:
-                m = re.search(r"^FUNCTION\s*=\s*(\w+)\s*$", f.read(), re.M)
-            if m and m.group(1) != d:
-                out[d] = m.group(1)
-    return out
 STUB_PREFIXES = ("mt_port_", "mt_invoke", "mt_mission_invoke", "mt_bus_invoke", "mt_seq_recheck")
 STUB_SKIP = ("mt_port_halt",)   # hand-written: reaching it is an error (assert(0))
 
@@ -2903,16 +2885,6 @@ def main(argv=None):
     for fname, text in texts.items():
         write(f"{fname}_contract.h", text)
     write("mtc_stubs.c", "".join(stubs))
-    # A proof folder that checks part of a function's clauses (FUNCTION = that function,
-    # PROOF_UID its own name; run.py) includes the function's contract through its own name.
-    # (A FUNCTION without a contract here gets none: its build fails, and run.py reports it.)
-    for uid, fn_ in split_proofs(root).items():
-        if fn_ not in texts:
-            continue
-        # the digest makes this file change whenever the contract does (make's dependency)
-        digest = hashlib.sha256(texts[fn_].encode()).hexdigest()
-        write(f"{uid}_contract.h", f"{HEADER_NOTE}/* {fn_}_contract.h: sha256 {digest} */\n"
-                                   f"#include \"{fn_}_contract.h\"\n")
     write("manifest.json", json.dumps({"functions": results, "stubs": stubbed,
                                        "logic": [ld.name for ld in prog.logic],
                                        "ghosts": [g for g, _ in prog.ghosts] +

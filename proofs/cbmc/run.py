@@ -72,6 +72,12 @@ def proof_function(name):
     return makefile_vars(name).get("FUNCTION") or name
 
 
+def harness_path(name):
+    """A proof folder's harness: its own, or its FUNCTION's (a folder on part of the clauses)."""
+    fn = proof_function(name)
+    return os.path.join(PROOFS, fn, f"{fn}_harness.c")
+
+
 def proof_clauses(name):
     """The clause tags a proof folder checks (its Makefile's CLAUSES), or None: all of them."""
     v = makefile_vars(name).get("CLAUSES")
@@ -335,7 +341,7 @@ def run_one(name, big, out_root, timeout, records, mode):
                 entry["timeout"] = True
             return entry
         c = parse_coverage(os.path.join(d, "coverage.json"),
-                           os.path.join(PROOFS, name, f"{name}_harness.c"))
+                           harness_path(name))
         entry["coverage_source"] = "fresh"
     entry.update({k: c[k] for k in COVER_FIELDS})
     # the properties passed (a failed one returned above): coverage and witnesses decide

@@ -3,7 +3,9 @@
  * tools/acsl2cbmc.py into mt_topic_publish_i_contract.h. Shape: nondeterministic objects, assume the
  * requires, snapshot, call, assert ensures/behaviours/assigns; MTC_REACH lines are coverage
  * witnesses that the harness admits the extreme values named. Configuration: BUS_CBMC_CFG
- * (proofs/cbmc/Makefile.common, assumption B7). */
+ * (proofs/cbmc/Makefile.common, assumption B7).
+ * Built twice, each time asserting part of the clauses (CLAUSES in the Makefile): here and in
+ * ../mt_topic_publish_i__notify (assumption B17). */
 #include "mtc_objects.h"
 #include "mt_topic_publish_i_contract.h"
 
