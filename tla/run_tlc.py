@@ -27,16 +27,15 @@ import json
 import os
 import re
 import shutil
-import signal
-import subprocess
 import sys
-import tempfile
-import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(ROOT, "proofs"))
+from runtool import run_timed  # noqa: E402
+
 MANIFEST = os.path.join(HERE, "models.json")
 
 RE_DISTINCT = re.compile(r"([\d,]+) states generated, ([\d,]+) distinct states found")
@@ -111,25 +110,15 @@ def run_one(entry, args):
            "-workers", "auto", "-cleanup"] + entry.get("tlc_args", []) + [
            "-metadir", os.path.join(work, "states"), "-config", cfg, module + ".tla"]
     timeout = entry.get("timeout_s", args.timeout)
-    t0 = time.monotonic()
-    # One process per model, waited for with wait4: its own CPU time, also when models run
-    # side by side (--jobs).
-    with tempfile.TemporaryFile(mode="w+") as out:
-        p = subprocess.Popen(cmd, cwd=work, stdout=out, stderr=subprocess.STDOUT,
-                             universal_newlines=True)
-        timer = threading.Timer(timeout, p.kill)
-        timer.start()
-        _, status, ru = os.wait4(p.pid, 0)
-        timer.cancel()
-        p.returncode = os.waitstatus_to_exitcode(status)
-        out.seek(0)
-        log = out.read()
-    if p.returncode == -signal.SIGKILL:
+    # One process per model, its own CPU time (wait4), also when models run side by side (--jobs).
+    run = run_timed(cmd, timeout, cwd=work)
+    log = run.out
+    if run.timed_out:
         outcome = "error: timeout after %d s" % timeout
     else:
         outcome = classify(log, props)
-    seconds = round(time.monotonic() - t0, 1)
-    cpu = round(ru.ru_utime + ru.ru_stime, 1)
+    seconds = round(run.wall, 1)
+    cpu = round(run.cpu, 1)
     os.makedirs(os.path.join(args.out, "logs"), exist_ok=True)
     with open(os.path.join(args.out, "logs", name + ".log"), "w") as f:
         f.write("$ " + " ".join(cmd) + "\n" + log)

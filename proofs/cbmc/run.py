@@ -38,14 +38,15 @@ import re
 import signal
 import subprocess
 import sys
-import tempfile
-import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 PROOFS = os.path.join(HERE, "proofs")
+sys.path.insert(0, os.path.dirname(HERE))
+from runtool import run_timed  # noqa: E402
+
 COVERAGE_MIN = 90.0
 
 
@@ -150,25 +151,13 @@ def header_functions(inc=None):
 
 
 def run_make(name, big, target, timeout):
-    """Run `make target` in the proof folder (its own process group, killed after timeout
-    seconds); returns (rc, wall s, cpu s, output)."""
+    """Run `make target` in the proof folder (runtool.run_timed: its own process group, killed
+    after timeout seconds); returns (rc, wall s, cpu s, output)."""
     cmd = ["make", "-s", "-C", os.path.join(PROOFS, name), target]
     if big:
         cmd.append("CBMC_BIG=1")
-    t0 = time.monotonic()
-    with tempfile.TemporaryFile(mode="w+") as log:
-        p = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, text=True,
-                             start_new_session=True)
-        timer = threading.Timer(timeout, lambda: os.killpg(p.pid, signal.SIGKILL))
-        timer.start()
-        _, status, ru = os.wait4(p.pid, 0)
-        timer.cancel()
-        log.seek(0)
-        out = log.read()
-    rc = os.waitstatus_to_exitcode(status)
-    if rc == -signal.SIGKILL:
-        out += f"\ntimeout: killed after {timeout} s"
-    return rc, time.monotonic() - t0, ru.ru_utime + ru.ru_stime, out
+    r = run_timed(cmd, timeout)
+    return r.rc, r.wall, r.cpu, r.out + (f"\ntimeout: killed after {timeout} s" if r.timed_out else "")
 
 
 def killed_by_timeout(rc):

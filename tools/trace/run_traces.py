@@ -37,6 +37,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "proofs"))
+from runtool import run_timed  # noqa: E402
 
 # (name, kind, cap, max_msg, max_len, drop)
 CASES = [
@@ -201,10 +203,11 @@ def tlc(args, work, spec):
            "-cp", args.jar, "tlc2.TLC",
            "-workers", "auto", "-cleanup", "-metadir", os.path.join(work, "states"),
            "-config", spec + ".cfg", spec + ".tla"]
-    p = subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                       universal_newlines=True, timeout=args.timeout)
-    log = p.stdout
-    if re.search(r"^Error: Invariant TraceNotAccepted is violated", log, re.M):
+    run = run_timed(cmd, args.timeout, cwd=work)
+    log = run.out + ("\ntimeout: killed after %d s" % args.timeout if run.timed_out else "")
+    if run.timed_out:
+        result = "error"
+    elif re.search(r"^Error: Invariant TraceNotAccepted is violated", log, re.M):
         result = "accepted"
     elif re.search(r"^Error: Deadlock reached", log, re.M):
         result = "rejected"   # no model step matches the next event
