@@ -208,7 +208,8 @@ do_lint() {
 # ---------------------------------------------------------------------------------------------
 # prove: Frama-C/WP, Why3, Z3, CVC4, CBMC 6, TLA+ tools
 # ---------------------------------------------------------------------------------------------
-CBMC_TOOLS=(cbmc goto-cc goto-instrument goto-harness)
+# goto-analyzer: cbmc-viewer's reachable-function list (make cbmc-viewer)
+CBMC_TOOLS=(cbmc goto-cc goto-instrument goto-harness goto-analyzer)
 
 # cbmc_major BIN: print the major version of a cbmc binary (fails if it does not run).
 cbmc_major() {
@@ -366,6 +367,7 @@ EOF
     "$TOOLS/bin/cbmc" "$tmp/h2.goto" --function harness "${flags[@]}" >"$tmp/log4" 2>&1 ||
         { cat "$tmp/log4" >&2; die "cbmc on goto binary failed"; }
     "$TOOLS/bin/goto-harness" --version >/dev/null 2>&1 || die "goto-harness does not run"
+    "$TOOLS/bin/goto-analyzer" --version >/dev/null 2>&1 || die "goto-analyzer does not run"
     rm -rf "$tmp"
 }
 
@@ -373,6 +375,18 @@ ensure_cbmc() {
     local sys major
     # A working .tools/bin/cbmc >= 6 from an earlier run: keep it.
     if major="$(cbmc_major "$TOOLS/bin/cbmc" 2>/dev/null)" && [ "$major" -ge 6 ]; then
+        # a tool added to CBMC_TOOLS since that run gets its wrapper (the package is unpacked)
+        local t
+        for t in "${CBMC_TOOLS[@]}"; do
+            [ -x "$TOOLS/bin/$t" ] && continue
+            if [ -L "$TOOLS/bin/cbmc" ]; then
+                command -v "$t" >/dev/null || die "$t not found beside the system cbmc"
+                write_cbmc_wrappers_system
+            else
+                [ -x "$TOOLS/cbmc/root/usr/bin/$t" ] || die "$t missing from .tools/cbmc/root"
+                write_cbmc_wrappers_private
+            fi
+        done
         verify_cbmc
         return 0
     fi
@@ -426,10 +440,33 @@ ensure_tla() {
     verify_tla
 }
 
+# cbmc-viewer, the CBMC starter kit's browsable report (make cbmc-viewer): pinned, with its
+# dependencies pinned too, into .tools/cbmc-viewer.
+CBMC_VIEWER_PKGS=(cbmc-viewer==3.12 jinja2==3.1.6 markupsafe==3.0.4 voluptuous==0.16.0)
+
+cbmc_viewer_version() {
+    PYTHONPATH="$TOOLS/cbmc-viewer" python3 "$TOOLS/cbmc-viewer/bin/cbmc-viewer" --version 2>/dev/null
+}
+
+ensure_cbmc_viewer() {
+    local want="${CBMC_VIEWER_PKGS[0]#*==}"
+    if [ "$(cbmc_viewer_version || true)" != "CBMC viewer $want" ]; then
+        python3 -m pip --version >/dev/null 2>&1 || apt_ensure python3-pip
+        rm -rf "$TOOLS/cbmc-viewer"
+        mkdir -p "$TOOLS"
+        quiet pip-cbmc-viewer python3 -m pip install --disable-pip-version-check --no-input --no-deps \
+            --target "$TOOLS/cbmc-viewer" "${CBMC_VIEWER_PKGS[@]}"
+        [ "$(cbmc_viewer_version || true)" = "CBMC viewer $want" ] ||
+            die "cbmc-viewer $want does not run after pip install (.tools/cbmc-viewer)"
+    fi
+    record cbmc-viewer "cbmc-viewer $want (.tools/cbmc-viewer; make cbmc-viewer)"
+}
+
 do_prove() {
     # ocaml: ocamlopt builds proofs/wp/wp_poll.ml against the installed Frama-C (assumption W5)
     apt_ensure frama-c-base why3 z3 cvc4 gcc cadical ocaml
     ensure_cbmc
+    ensure_cbmc_viewer
     ensure_tla
     record frama-c "frama-c $(first_line frama-c -version)"
     record why3 "$(first_line why3 --version)"

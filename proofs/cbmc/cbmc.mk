@@ -20,6 +20,11 @@
 #   make cbmc-gen        only translate the ACSL contracts (build/proof/cbmc/gen/)
 #   make cbmc-test       the translator's tests (tools/test_acsl2cbmc.sh): sample contract,
 #                        unsupported constructs, and a mutated ensures caught by CBMC and WP
+#   make cbmc-viewer     cbmc-viewer's browsable report (the CBMC starter kit's viewer, pinned
+#                        by tools/bootstrap.sh prove) of each proof named in H="f g ..."
+#                        (default: each proof with a property run in this tree):
+#                        build/proof/cbmc/proofs/<f>/report/html/index.html. A proof whose
+#                        verdicts run.py replayed has no run here: make runs it first.
 #   make cbmc-clean
 #
 # The contracts come from the ACSL annotations only (tools/acsl2cbmc.py); see
@@ -28,10 +33,11 @@
 CBMC_JOBS ?= 2
 CBMC_PROOF_NAMES := $(notdir $(patsubst %/cbmc-proof.txt,%,$(wildcard proofs/cbmc/proofs/*/cbmc-proof.txt)))
 
-.PHONY: cbmc cbmc-max cbmc-gen cbmc-test cbmc-clean cbmc-deps $(addprefix cbmc-,$(CBMC_PROOF_NAMES))
+.PHONY: cbmc cbmc-max cbmc-gen cbmc-test cbmc-viewer cbmc-clean cbmc-deps $(addprefix cbmc-,$(CBMC_PROOF_NAMES))
 
 cbmc-deps:
-	@[ -x .tools/bin/cbmc ] && [ -x .tools/bin/goto-cc ] || tools/bootstrap.sh prove
+	@[ -x .tools/bin/cbmc ] && [ -x .tools/bin/goto-cc ] && [ -x .tools/bin/goto-analyzer ] && \
+	    [ -x .tools/cbmc-viewer/bin/cbmc-viewer ] || tools/bootstrap.sh prove
 
 cbmc: cbmc-deps
 	@python3 proofs/cbmc/run.py -j $(CBMC_JOBS) $(if $(CBMC_HARNESSES),--harnesses $(CBMC_HARNESSES))
@@ -47,6 +53,16 @@ cbmc-gen:
 
 cbmc-test: cbmc-deps
 	@tools/test_acsl2cbmc.sh
+	@MT_REQUIRE_VIEWER=1 python3 -m pytest -q -p no:cacheprovider tests/proofs/test_cbmc_viewer.py
+
+CBMC_VIEWER_H = $(or $(H),$(notdir $(patsubst %/result.json,%,$(wildcard build/proof/cbmc/proofs/*/result.json))))
+cbmc-viewer: cbmc-deps
+	@[ -n "$(strip $(CBMC_VIEWER_H))" ] || \
+	    { echo "cbmc-viewer: name the proofs (H=...): none has run in this tree" >&2; exit 2; }
+	@for h in $(CBMC_VIEWER_H); do \
+	    [ -f proofs/cbmc/proofs/$$h/cbmc-proof.txt ] || { echo "cbmc-viewer: no proof $$h" >&2; exit 2; }; \
+	    $(MAKE) --no-print-directory -s -C proofs/cbmc/proofs/$$h report || exit 1; \
+	    echo "cbmc-viewer: build/proof/cbmc/proofs/$$h/report/html/index.html"; done
 
 cbmc-clean:
 	rm -rf $(BUILD)/proof/cbmc
