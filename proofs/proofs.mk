@@ -272,6 +272,6 @@ wp-diversity: $(WP_WHY3CONF)
 wp-clean:
 	rm -rf $(WP_ROOT)/wp $(WP_ROOT)/wp-z3 $(WP_ROOT)/wp-cvc4
 
-# CBMC harnesses generated from the ACSL contracts (tools/acsl2cbmc.py), when present.
+# CBMC harnesses generated from the ACSL contracts (tools/acsl2cbmc), when present.
 -include proofs/cbmc/cbmc.mk
 -include proofs/check.mk

@@ -70,7 +70,7 @@ static inline void mt_seq_stamp_u32(uint32_t *p, uint32_t v)
 
 /* No body in proof builds: with a concurrent writer (MtSeqRacing, mt_spec.h) the stamp may
  * have changed since the caller's last read; without one it is the stamp the slot holds
- * (assumption C3). CBMC uses the stub that tools/acsl2cbmc.py generates from this contract. */
+ * (assumption C3). CBMC uses the stub that tools/acsl2cbmc generates from this contract. */
 /*@ requires \valid_read(p);
     assigns \nothing;
     ensures quiet: !MtSeqRacing ==> \result == *p;

@@ -18,8 +18,9 @@
 #   make cbmc-max        the capacity-maximum tier (ring capacities 2^30 - 1 and 2^30, 31-bit
 #                        indices): slow, run nightly; build/proof/cbmc/summary-max.json
 #   make cbmc-gen        only translate the ACSL contracts (build/proof/cbmc/gen/)
-#   make cbmc-test       the translator's tests (tools/test_acsl2cbmc.sh): sample contract,
-#                        unsupported constructs, and a mutated ensures caught by CBMC and WP
+#   make cbmc-test       the translator's tests (tools/test_acsl2cbmc.sh: pytest over
+#                        tools/acsl2cbmc/tests): sample contract, unsupported constructs, and
+#                        a mutated ensures caught by CBMC and WP
 #   make cbmc-viewer     cbmc-viewer's browsable report (the CBMC starter kit's viewer, pinned
 #                        by tools/bootstrap.sh prove) of each proof named in H="f g ..."
 #                        (default: each proof with a property run in this tree):
@@ -27,7 +28,7 @@
 #                        verdicts run.py replayed has no run here: make runs it first.
 #   make cbmc-clean
 #
-# The contracts come from the ACSL annotations only (tools/acsl2cbmc.py); see
+# The contracts come from the ACSL annotations only (tools/acsl2cbmc); see
 # proofs/cbmc/README.md and proofs/assumptions.json (the B entries).
 
 CBMC_JOBS ?= 2
@@ -49,7 +50,7 @@ $(addprefix cbmc-,$(CBMC_PROOF_NAMES)): cbmc-%: cbmc-deps
 	@python3 proofs/cbmc/run.py --summary $(BUILD)/proof/cbmc/summary-$*.json $*
 
 cbmc-gen:
-	@python3 tools/acsl2cbmc.py
+	@python3 tools/acsl2cbmc
 
 cbmc-test: cbmc-deps
 	@tools/test_acsl2cbmc.sh

@@ -4,7 +4,7 @@
 
   proofs/cbmc/run.py [-j N] [--max] [--summary FILE] [--harnesses FILE] [FUNCTION...]
 
-1. tools/acsl2cbmc.py translates the ACSL contracts (build/proof/cbmc/gen/).
+1. tools/acsl2cbmc translates the ACSL contracts (build/proof/cbmc/gen/).
 2. Every proof folder proofs/cbmc/proofs/<fn>/ (or the ones named) is built and run twice,
    N at a time: the property run (all check flags, unwinding assertions) and the coverage run
    (--cover location).
@@ -383,7 +383,7 @@ def main():
     if unknown:
         print(f"cbmc: no proof folder for {', '.join(unknown)}", file=sys.stderr)
         return 2
-    gen = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "acsl2cbmc.py"), "--root",
+    gen = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "acsl2cbmc"), "--root",
                           ROOT, "--out", os.path.join(ROOT, "build/proof/cbmc/gen")],
                          capture_output=True, text=True)
     if gen.returncode != 0:

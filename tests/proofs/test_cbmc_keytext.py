@@ -112,7 +112,8 @@ GOTO_CC = os.path.join(ROOT, ".tools", "bin", "goto-cc")
 
 # `make test` runs before CBMC is installed (the README's prove command installs it); there the
 # keys are not computed at all. `make prove` computes every harness's keys and fails on an error,
-# and `make cbmc-test` (part of it) checks the same targets (tools/test_acsl2cbmc.py RecordKeys).
+# and `make cbmc-test` (part of it) checks the same targets (RecordKeys in
+# tools/acsl2cbmc/tests/test_acsl2cbmc.py).
 @pytest.mark.skipif(not os.access(GOTO_CC, os.X_OK), reason="goto-cc not installed (.tools/bin)")
 def test_the_real_tree_keys_are_digests():
     """Every proof folder's make target still yields a digest through keytext.py."""

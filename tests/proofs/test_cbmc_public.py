@@ -103,7 +103,7 @@ def test_the_real_split_folders_check_every_clause(tmp_path):
     import json
     import subprocess
     import sys
-    subprocess.run([sys.executable, os.path.join(ROOT, "tools", "acsl2cbmc.py"), "--root", ROOT,
+    subprocess.run([sys.executable, os.path.join(ROOT, "tools", "acsl2cbmc"), "--root", ROOT,
                     "--out", str(tmp_path), "--quiet"], check=True)
     with open(tmp_path / "manifest.json", encoding="utf-8") as f:
         functions = json.load(f)["functions"]

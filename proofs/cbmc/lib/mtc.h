@@ -119,7 +119,7 @@ static inline int mtc_separated(const void *p, __int128 plo, __int128 phi, __int
     return ps + (phi - plo + 1) * pesz <= qs || qs + (qhi - qlo + 1) * qesz <= ps;
 }
 
-/* ACSL a / b and a % b at 64 bits (tools/acsl2cbmc.py, Translator.divide), for operands whose
+/* ACSL a / b and a % b at 64 bits (tools/acsl2cbmc, Translator.divide), for operands whose
  * range the translator cannot bound: exact when the operands are in the asserted range (ACSL
  * truncates toward zero, as C does); an operand outside it is a failed check of the harness.
  * A zero divisor is reported by CBMC's division-by-zero check, as for any other division.

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* CBMC proof: mt_bring_valid (a C twin of an ACSL invariant) against its ACSL contract, translated by
- * tools/acsl2cbmc.py into mt_bring_valid_contract.h: the result is 1 exactly when the invariant holds.
+ * tools/acsl2cbmc into mt_bring_valid_contract.h: the result is 1 exactly when the invariant holds.
  * Every field of the object is nondeterministic, corrupted values included; MTC_REACH lines
  * are coverage witnesses. */
 #include "mtc_objects.h"

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* CBMC proof: mt_oring_peek against its ACSL contract (kernel/include/mt/objring.h), translated by
- * tools/acsl2cbmc.py into mt_oring_peek_contract.h. Shape: nondeterministic objects, assume the
+ * tools/acsl2cbmc into mt_oring_peek_contract.h. Shape: nondeterministic objects, assume the
  * requires, snapshot, call, assert ensures/behaviours/assigns; MTC_REACH lines are coverage
  * witnesses that the harness admits the extreme values named. */
 #include "mtc_objects.h"

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* CBMC proof: mt_proc_set_init against its ACSL contract (kernel/include/mt/proc.h), translated by
- * tools/acsl2cbmc.py into mt_proc_set_init_contract.h. Shape: nondeterministic objects, assume the
+ * tools/acsl2cbmc into mt_proc_set_init_contract.h. Shape: nondeterministic objects, assume the
  * requires, snapshot, call, assert ensures/behaviours/assigns; MTC_REACH lines are coverage
  * witnesses that the harness admits the extreme values named. */
 #include "mtc_objects.h"

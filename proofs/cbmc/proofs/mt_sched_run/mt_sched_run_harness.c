@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* CBMC proof: mt_sched_run against its ACSL contract (kernel/include/mt/sched.h), translated by
- * tools/acsl2cbmc.py into mt_sched_run_contract.h. Shape: nondeterministic objects, assume the
+ * tools/acsl2cbmc into mt_sched_run_contract.h. Shape: nondeterministic objects, assume the
  * requires, snapshot, call, assert ensures/behaviours/assigns; MTC_REACH lines are coverage
  * witnesses that the harness admits the extreme values named.
  * Built twice, each time asserting part of the clauses (CLAUSES in the Makefile): here and in

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* CBMC proof: mt_wq_attach against its ACSL contract (kernel/include/mt/wq.h), translated by
- * tools/acsl2cbmc.py into mt_wq_attach_contract.h. Shape: nondeterministic objects, assume the requires,
+ * tools/acsl2cbmc into mt_wq_attach_contract.h. Shape: nondeterministic objects, assume the requires,
  * snapshot, call, assert ensures/behaviours/assigns; MTC_REACH lines are coverage witnesses that
  * the harness admits the extreme values named. */
 #include "mtc_objects.h"

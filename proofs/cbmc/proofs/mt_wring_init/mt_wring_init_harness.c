@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: Apache-2.0 */
 /* CBMC proof: mt_wring_init against its ACSL contract (kernel/include/mt/wordring.h), translated by
- * tools/acsl2cbmc.py into mt_wring_init_contract.h. Shape: nondeterministic objects, assume the
+ * tools/acsl2cbmc into mt_wring_init_contract.h. Shape: nondeterministic objects, assume the
  * requires, snapshot, call, assert ensures/behaviours/assigns; MTC_REACH lines are coverage
  * witnesses that the harness admits the extreme values named. The ring is the default
  * configuration (MT_CFG_WRING_CAP 256: 257 slots), every index and counter nondeterministic. */

@@ -1,6 +1,5 @@
-#!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""Tests of tools/acsl2cbmc.py (run by tools/test_acsl2cbmc.sh, `make cbmc-test`).
+"""Tests of the translator tools/acsl2cbmc (pytest: tools/test_acsl2cbmc.sh, `make cbmc-test`).
 
 1. A small sample contract (predicate, logic function, \\exists, \\forall, \\old, \\valid,
    \\separated, behaviours, assigns with a range) is translated; the generated C is checked
@@ -25,7 +24,8 @@
    (RecordReplay): recorded from a passing run, replayed only for its digest, and a record
    that disagrees with a fresh property run (CBMC_RECORD=properties) fails the harness.
 
-Everything runs on copies under build/proof/cbmc/test/; kernel/ is never modified.
+Everything runs on copies under build/proof/cbmc/test/; kernel/ is never modified. conftest.py
+writes build/proof/cbmc/test/summary.json (read by tools/proof_report.py).
 """
 
 import json
@@ -37,8 +37,8 @@ import sys
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-TOOL = os.path.join(HERE, "acsl2cbmc.py")
+TOOL = os.path.dirname(HERE)                       # the package: python3 tools/acsl2cbmc
+ROOT = os.path.dirname(os.path.dirname(TOOL))
 WORK = os.path.join(ROOT, "build", "proof", "cbmc", "test")
 BIN = os.path.join(ROOT, ".tools", "bin")
 LIB = os.path.join(ROOT, "proofs", "cbmc", "lib")
@@ -782,11 +782,16 @@ class Division(unittest.TestCase):
             self.assertIn(lab, failed)
 
 
+def copy_tool(dst):
+    """The translator's package (its modules, not its tests) into dst/tools/acsl2cbmc."""
+    shutil.copytree(TOOL, os.path.join(dst, "tools", "acsl2cbmc"),
+                    ignore=shutil.ignore_patterns("tests", "__pycache__", ".pytest_cache"))
+
+
 def copy_kernel(dst):
     shutil.rmtree(dst, ignore_errors=True)
     shutil.copytree(os.path.join(ROOT, "kernel"), os.path.join(dst, "kernel"))
-    os.makedirs(os.path.join(dst, "tools"))
-    shutil.copy(TOOL, os.path.join(dst, "tools"))
+    copy_tool(dst)
 
 
 MUT_FIND = """    behavior ok:
@@ -821,8 +826,8 @@ class KernelMutation(unittest.TestCase):
     def cbmc(self, variant):
         d = self.dirs[variant]
         gen = os.path.join(d, "gen")
-        t = subprocess.run([sys.executable, os.path.join(d, "tools", "acsl2cbmc.py"), "--root", d,
-                            "--out", gen, "--quiet"], capture_output=True, text=True)
+        t = subprocess.run([sys.executable, os.path.join(d, "tools", "acsl2cbmc"),
+                            "--root", d, "--out", gen, "--quiet"], capture_output=True, text=True)
         self.assertEqual(t.returncode, 0, t.stderr)
         with open(os.path.join(gen, ".stamp"), "w"):
             pass
@@ -881,8 +886,7 @@ def copy_for_keys(dst):
     shutil.rmtree(dst, ignore_errors=True)
     for d in ("kernel", os.path.join("proofs", "cbmc")):
         shutil.copytree(os.path.join(ROOT, d), os.path.join(dst, d))
-    os.makedirs(os.path.join(dst, "tools"))
-    shutil.copy(TOOL, os.path.join(dst, "tools"))
+    copy_tool(dst)
 
 
 def prepend(path, text):
@@ -1022,23 +1026,3 @@ class RecordReplay(unittest.TestCase):
         self.assertEqual(e["property_source"], "fresh", "a record of other inputs was replayed")
         self.assertEqual(e["properties"], rec["properties"])
 
-
-def main():
-    """Run the tests; write WORK/summary.json (read by tools/proof_report.py: `make prove`
-    counts a skipped test as not passed)."""
-    prog = unittest.main(verbosity=2, exit=False)
-    r = prog.result
-    failed = len(r.failures) + len(r.errors) + len(r.unexpectedSuccesses)
-    skipped = len(r.skipped)
-    summary = {"tests": r.testsRun, "failed": failed, "skipped": skipped,
-               "passed": r.testsRun - failed - skipped,
-               "not_passed": [str(t) for t, _ in r.failures + r.errors + r.skipped]}
-    os.makedirs(WORK, exist_ok=True)
-    with open(os.path.join(WORK, "summary.json"), "w") as f:
-        json.dump(summary, f, indent=1)
-        f.write("\n")
-    sys.exit(0 if r.wasSuccessful() else 1)
-
-
-if __name__ == "__main__":
-    main()
