@@ -54,7 +54,8 @@ cbmc-gen:
 
 cbmc-test: cbmc-deps
 	@tools/test_acsl2cbmc.sh
-	@MT_REQUIRE_VIEWER=1 python3 -m pytest -q -p no:cacheprovider tests/proofs/test_cbmc_viewer.py
+	@$(PROOF_TOOLS_PYTHON) -c 'import pytest' 2>/dev/null || tools/bootstrap.sh test
+	@MT_REQUIRE_VIEWER=1 $(PROOF_TOOLS_PYTHON) -m pytest -q -p no:cacheprovider tests/proofs/test_cbmc_viewer.py
 
 CBMC_VIEWER_H = $(or $(H),$(notdir $(patsubst %/result.json,%,$(wildcard build/proof/cbmc/proofs/*/result.json))))
 cbmc-viewer: cbmc-deps
