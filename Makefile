@@ -50,7 +50,7 @@ help:
 	@echo "  make prove-selftest  seeded bugs (proofs/mutants.json), each rejected as its entry says"
 	@echo "  make prove PROVE_SHARD=i/N;  make prove-merge SHARDS=\"dir ...\"   proofs over N machines"
 	@echo "  make wp | wp-<module> | wp-gate | wp-canary | wp-diversity | wp-cache-save"
-	@echo "  make cbmc | cbmc-<function> | cbmc-max | cbmc-test"
+	@echo "  make cbmc | cbmc-<function> | cbmc-max | cbmc-test | cbmc-viewer"
 	@echo "  make tla | tla-deep | tla-trace | tla-trace-mission | tla-update"
 	@echo "  make chibios-prove   WP and CBMC of the ChibiOS port's time arithmetic"
 	@echo "  make check-<module>  one module: its tests, WP, CBMC, TLC and traces (ring objring"
