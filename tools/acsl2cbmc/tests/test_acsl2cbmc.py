@@ -882,10 +882,11 @@ class KernelMutation(unittest.TestCase):
 
 
 def copy_for_keys(dst):
-    """kernel/, the CBMC proof farm and the translator, at another path."""
+    """kernel/, the CBMC proof farm, the runners' helper and the translator, at another path."""
     shutil.rmtree(dst, ignore_errors=True)
     for d in ("kernel", os.path.join("proofs", "cbmc")):
         shutil.copytree(os.path.join(ROOT, d), os.path.join(dst, d))
+    shutil.copy(os.path.join(ROOT, "proofs", "runtool.py"), os.path.join(dst, "proofs"))
     copy_tool(dst)
 
 
