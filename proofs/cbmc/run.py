@@ -157,7 +157,8 @@ def run_make(name, big, target, timeout):
     if big:
         cmd.append("CBMC_BIG=1")
     r = run_timed(cmd, timeout)
-    return r.rc, r.wall, r.cpu, r.out + (f"\ntimeout: killed after {timeout} s" if r.timed_out else "")
+    out = r.out + (f"\ntimeout: killed after {timeout} s" if r.timed_out else "")
+    return r.rc, r.wall, r.cpu, out
 
 
 def killed_by_timeout(rc):

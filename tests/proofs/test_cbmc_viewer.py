@@ -16,10 +16,12 @@ import pytest
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 BIN = os.path.join(ROOT, ".tools", "bin")
 VIEWER = os.path.join(ROOT, ".tools", "cbmc-viewer")
-INSTALLED = all(os.access(p, os.X_OK) for p in (os.path.join(BIN, "cbmc"), os.path.join(BIN, "goto-analyzer"),
-                                                os.path.join(VIEWER, "bin", "cbmc-viewer")))
-pytestmark = pytest.mark.skipif(not INSTALLED and os.environ.get("MT_REQUIRE_VIEWER") != "1",
-                                reason="CBMC or cbmc-viewer not installed (tools/bootstrap.sh prove)")
+NEEDED = (os.path.join(BIN, "cbmc"), os.path.join(BIN, "goto-analyzer"),
+          os.path.join(VIEWER, "bin", "cbmc-viewer"))
+INSTALLED = all(os.access(p, os.X_OK) for p in NEEDED)
+pytestmark = pytest.mark.skipif(
+    not INSTALLED and os.environ.get("MT_REQUIRE_VIEWER") != "1",
+    reason="CBMC or cbmc-viewer not installed (tools/bootstrap.sh prove)")
 
 
 def viewer_json(report, kind):
@@ -28,8 +30,8 @@ def viewer_json(report, kind):
 
 
 def test_report_of_a_proof():
-    p = subprocess.run(["make", "--no-print-directory", "cbmc-viewer", "H=mt_status_str"], cwd=ROOT,
-                       capture_output=True, text=True, timeout=600)
+    p = subprocess.run(["make", "--no-print-directory", "cbmc-viewer", "H=mt_status_str"],
+                       cwd=ROOT, capture_output=True, text=True, timeout=600)
     assert p.returncode == 0, p.stdout + p.stderr
     out = os.path.join(ROOT, "build", "proof", "cbmc", "proofs", "mt_status_str")
     report = os.path.join(out, "report")
@@ -46,8 +48,8 @@ def test_report_of_a_proof():
 
 
 def test_unknown_proof_is_an_error():
-    p = subprocess.run(["make", "--no-print-directory", "cbmc-viewer", "H=mt_no_such_function"], cwd=ROOT,
-                       capture_output=True, text=True, timeout=60)
+    p = subprocess.run(["make", "--no-print-directory", "cbmc-viewer", "H=mt_no_such_function"],
+                       cwd=ROOT, capture_output=True, text=True, timeout=60)
     assert p.returncode != 0 and "no proof mt_no_such_function" in p.stderr
 
 
@@ -62,11 +64,13 @@ def test_a_failed_property_reads_as_failed(tmp_path):
     for name, extra in (("result", []), ("coverage", ["--cover", "location"]),
                         ("property", ["--show-properties"])):
         with open(tmp_path / f"{name}.json", "w", encoding="utf-8") as f:
-            rc = subprocess.run([cbmc, goto, "--json-ui"] + extra, stdout=f, cwd=tmp_path).returncode
+            rc = subprocess.run([cbmc, goto, "--json-ui"] + extra, stdout=f,
+                                cwd=tmp_path).returncode
         assert rc in (0, 10), name
     env = dict(os.environ, PATH=BIN + os.pathsep + os.environ.get("PATH", ""), PYTHONPATH=VIEWER)
-    subprocess.run(["python3", os.path.join(VIEWER, "bin", "cbmc-viewer"), "--result", "result.json",
-                    "--coverage", "coverage.json", "--property", "property.json", "--srcdir",
+    subprocess.run(["python3", os.path.join(VIEWER, "bin", "cbmc-viewer"),
+                    "--result", "result.json", "--coverage", "coverage.json",
+                    "--property", "property.json", "--srcdir",
                     str(tmp_path), "--goto", goto, "--reportdir", "report"],
                    check=True, cwd=tmp_path, env=env, capture_output=True)
     res = viewer_json(str(tmp_path / "report"), "result")
