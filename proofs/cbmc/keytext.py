@@ -138,19 +138,16 @@ def extern_object_name(item):
     return m.group(1)
 
 
-def main():
-    data = sys.stdin.read().split("\n")
-    head, segments, cur = [], [], None
-    for text in data:
-        if text.startswith("== "):
-            cur = [text, []]
-            segments.append(cur)
-        elif cur is None:
-            head.append(text)
-        else:
-            cur[1].append(text)
-    seg_items = []
-    for title, raw in segments:
+_SEGMENTS = {}
+
+
+def segment_items(raw):
+    """The top-level items of one source's preprocessed lines, named. Memoised on the text: a
+    run of every harness digests the same library sources, with the same options, many times
+    (proofs/cbmc/run.py computes its keys in one process); the items are never changed after."""
+    text = "\n".join(raw)
+    items = _SEGMENTS.get(text)
+    if items is None:
         items = split_items(read_segment(raw))
         for it in items:
             if it.kind in ("def", "decl"):
@@ -159,7 +156,22 @@ def main():
                     it.name = extern_object_name(it)
                 if it.name is None:
                     it.kind = "other"
-        seg_items.append((title, items))
+        _SEGMENTS[text] = items
+    return items
+
+
+def key_text(data):
+    """The key text of the whole input (the text main reads on stdin)."""
+    head, segments, cur = [], [], None
+    for text in data.split("\n"):
+        if text.startswith("== "):
+            cur = [text, []]
+            segments.append(cur)
+        elif cur is None:
+            head.append(text)
+        else:
+            cur[1].append(text)
+    seg_items = [(title, segment_items(raw)) for title, raw in segments]
     # reachability over names: roots are the options, the entry point and every other item
     defs = {}
     for _, items in seg_items:
@@ -197,8 +209,11 @@ def main():
                 out.extend(t for _, _, t in it.lines if t.strip())
     text = "\n".join(out) + "\n"
     names = {}
-    text = NUMBERED.sub(lambda m: names.setdefault(m.group(0), f"@n{len(names)}"), text)
-    sys.stdout.write(text)
+    return NUMBERED.sub(lambda m: names.setdefault(m.group(0), f"@n{len(names)}"), text)
+
+
+def main():
+    sys.stdout.write(key_text(sys.stdin.read()))
 
 
 if __name__ == "__main__":

@@ -15,8 +15,8 @@
 Verdict records (assumption B10): proofs/cbmc/records.json holds, per harness, the verdicts of
 its last passing runs, each with the digest of that run's inputs (`make result-key` and `make
 cover-key` in the proof folder: tool versions, every option, and every source of the binary as
-goto-cc's preprocessor expands it). A run whose digest equals the recorded one is replayed from
-the record instead of being run again. CBMC_RECORD selects:
+goto-cc's preprocessor expands it; computed here in one process, input_keys). A run whose
+digest equals the recorded one is replayed from the record instead of being run again. CBMC_RECORD selects:
   replay (default)  replay the property and coverage verdicts whose digest is unchanged
   properties        run every property run (a record with the same digest must agree with it:
                     same number of properties, none failed), replay coverage verdicts (CI)
@@ -32,6 +32,7 @@ pending ones among them are listed as pending, not run.
 """
 
 import argparse
+import hashlib
 import json
 import os
 import re
@@ -45,7 +46,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 PROOFS = os.path.join(HERE, "proofs")
 sys.path.insert(0, os.path.dirname(HERE))
+sys.path.insert(0, HERE)
 from runtool import run_timed  # noqa: E402
+import keytext  # noqa: E402  (proofs/cbmc/keytext.py)
 
 COVERAGE_MIN = 90.0
 
@@ -266,12 +269,54 @@ def save_records(records):
     os.replace(tmp, RECORD)
 
 
-def input_key(name, big, target):
-    """The digest of a run's inputs: target result-key (property run) or cover-key."""
-    p = subprocess.run(["make", "-s", "-C", os.path.join(PROOFS, name), target] +
-                       (["CBMC_BIG=1"] if big else []), capture_output=True, text=True)
-    key = p.stdout.strip()
-    return key if p.returncode == 0 and re.fullmatch(r"[0-9a-f]{64}", key) else None
+KEYS_MK = os.path.join(HERE, "keys.mk")
+_PREPROCESSED = {}
+
+
+def preprocessed(argv):
+    """goto-cc's preprocessor output for argv (None when it fails), memoised: the library
+    sources are the same, with the same options, in most proofs of one run."""
+    key = tuple(argv)
+    if key not in _PREPROCESSED:
+        p = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                           encoding="utf-8")
+        _PREPROCESSED[key] = p.stdout if p.returncode == 0 else None
+    return _PREPROCESSED[key]
+
+
+def digest(head, v, extra_defines):
+    """The digest of one run's inputs: the text Makefile.common's result-key or cover-key
+    recipe gives keytext.py (the head text, then each source as goto-cc preprocesses it, the
+    repository's path written @ROOT@), cut by keytext.py and hashed; None when a source does
+    not preprocess."""
+    parts = [head]
+    for src in v["srcs"].split():
+        pp = preprocessed([v["goto_cc"], "-E"] + v["defines"].split() + extra_defines.split()
+                          + v["includes"].split() + [src])
+        if pp is None:
+            return None
+        parts += ["== " + src + "\n", pp]
+    # the recipe's `sed 's|ROOT|@ROOT@|g'`: the path as a basic regular expression
+    root = re.compile(re.escape(v["root"]).replace(r"\.", "."))
+    text = root.sub("@ROOT@", "".join(parts))
+    return hashlib.sha256(keytext.key_text(text).encode("utf-8")).hexdigest()
+
+
+def input_keys(name, big):
+    """(property run's key, coverage run's key): the digests of `make result-key` and `make
+    cover-key` in the proof folder, computed here from the values keys.mk prints (one make
+    call, each preprocessed source once per run); (None, None) when make fails."""
+    p = subprocess.run(["make", "-s", "-C", os.path.join(PROOFS, name), "-f", "Makefile", "-f",
+                        KEYS_MK, "key-inputs"] + (["CBMC_BIG=1"] if big else []),
+                       capture_output=True, text=True, encoding="utf-8")
+    v = dict(line.split("\t", 1) for line in p.stdout.splitlines() if "\t" in line)
+    if p.returncode != 0 or len(v) != 9:
+        return None, None
+    with open(v["makefile_common"], encoding="utf-8") as f:
+        common = f.read()
+    rkey = digest(f"{v['property_line']}\nresult\n{common}", v, "")
+    ckey = digest(f"{v['cover_line']}\ncover {v['cover_defines']}\n", v, v["cover_defines"])
+    return rkey, ckey
 
 
 def property_run(name, big, out_root, timeout, rec, key, mode):
@@ -306,7 +351,7 @@ def run_one(name, big, out_root, timeout, records, mode):
     """Property verdict, then coverage verdict; each replayed from the record when the digest
     of its inputs matches (see CBMC_RECORD), run otherwise."""
     rec = records.get(name, {}) if not big else {}
-    rkey = input_key(name, big, "result-key")
+    rkey, ckey = input_keys(name, big)
     p, wall, cpu = property_run(name, big, out_root, timeout, rec, rkey, mode)
     entry = dict({"function": name, "contract": proof_function(name), "coverage": 0.0,
                   "seconds": round(wall, 1), "cpu_seconds": round(cpu, 1)}, **p)
@@ -315,7 +360,7 @@ def run_one(name, big, out_root, timeout, records, mode):
         entry.setdefault("coverage_source", "not run (the property run did not pass)")
         return entry
     d = os.path.join(out_root, name)
-    key = input_key(name, big, "cover-key")
+    key = ckey
     if mode in ("replay", "properties", "save") and key and rec.get("key") == key:
         c = {k: rec[k] for k in COVER_FIELDS}
         entry["coverage_source"] = "replayed"

@@ -274,7 +274,7 @@ def test_run_py_flags_a_coverage_run_killed_by_the_timeout(tmp_path, monkeypatch
         json.dump([{"result": [{"property": "p", "status": "SUCCESS"}]},
                    {"cProverStatus": "success"}], f)
     codes = {"result": 0, "coverage": -signal.SIGKILL}
-    monkeypatch.setattr(run, "input_key", lambda name, big, target: None)
+    monkeypatch.setattr(run, "input_keys", lambda name, big: (None, None))
     monkeypatch.setattr(run, "run_make", lambda name, big, target, timeout: (
         codes[target], 1.0, 1.0, "out"))
     e = run.run_one("mt_x", False, str(tmp_path), 5.0, {}, "fresh")

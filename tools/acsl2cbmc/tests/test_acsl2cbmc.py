@@ -18,9 +18,11 @@
 7. Divisions at the narrowest exact width (class Division): the generated width for each kind
    of operand range, exact quotients and remainders (negative operands included), wrong
    quotients caught, and an operand outside a checked range reported, not computed wrongly.
-6. The keys of the recorded verdicts (CBMC property and coverage records, B10): equal for copies of the tree at two other paths and for the repository itself,
-   changed by an option and by a comment line added to a header; the property key also by a
-   comment in Makefile.common, which leaves the coverage key as it is. run.py's replay
+6. The keys of the recorded verdicts (CBMC property and coverage records, B10): equal for
+   copies of the tree at two other paths and for the repository itself, changed by an option
+   and by a comment line added to a header; the property key also by a comment in
+   Makefile.common, which leaves the coverage key as it is; run.py's own computation of both
+   keys (input_keys) gives the make targets' digests. run.py's replay
    (RecordReplay): recorded from a passing run, replayed only for its digest, and a record
    that disagrees with a fresh property run (CBMC_RECORD=properties) fails the harness.
 
@@ -956,6 +958,46 @@ class RecordKeys(unittest.TestCase):
         self.assertNotEqual(k_a, key(self.b), "Makefile.common is not in the property key")
         self.assertEqual(self.cover_key(self.a), self.cover_key(self.b),
                          "a comment in Makefile.common changed the coverage key")
+
+
+    def run_py_keys(self, root, name):
+        code = ("import sys; sys.path.insert(0, sys.argv[1]); import run; "
+                "print(*run.input_keys(sys.argv[2], False))")
+        p = subprocess.run([sys.executable, "-c", code, os.path.join(root, "proofs", "cbmc"),
+                            name], capture_output=True, text=True,
+                           env=dict(os.environ, TOOLS_BIN=BIN))
+        self.assertEqual(p.returncode, 0, p.stderr)
+        return p.stdout.split()
+
+    def make_keys(self, root, name):
+        d = os.path.join(root, "proofs", "cbmc", "proofs", name)
+        keys = []
+        for target in ("result-key", "cover-key"):
+            p = subprocess.run(["make", "-s", "-C", d, target, f"TOOLS_BIN={BIN}"],
+                               capture_output=True, text=True)
+            self.assertEqual(p.returncode, 0, p.stderr)
+            keys.append(p.stdout.strip())
+        return keys
+
+    @unittest.skipUnless(os.path.exists(os.path.join(BIN, "goto-cc")), "CBMC not installed")
+    def test_run_py_keys(self):
+        """proofs/cbmc/run.py computes both keys in one process from what keys.mk prints (each
+        source preprocessed once per run, keytext.py in-process): the digests of the two make
+        targets, for a proof with its own coverage defines and one with a split clause list,
+        and again after a header change."""
+        for name in ("mt_bring_write", "mt_sched_run", "mt_topic_publish_i__notify"):
+            keys = self.run_py_keys(self.a, name)
+            self.assertEqual(keys, self.make_keys(self.a, name), name)
+            self.assertEqual(len(set(keys)), 2, name)
+        ring_h = os.path.join(self.b, "kernel", "include", "mt", "ring.h")
+        with open(ring_h, encoding="utf-8") as f:
+            text = f.read()
+        with open(ring_h, "w", encoding="utf-8") as f:
+            f.write(text.replace("#define MT_BRING_CAP_MAX 0x40000000u",
+                                 "#define MT_BRING_CAP_MAX 0x3FFFFFFFu"))
+        keys = self.run_py_keys(self.b, "mt_bring_write")
+        self.assertEqual(keys, self.make_keys(self.b, "mt_bring_write"))
+        self.assertNotEqual(keys, self.run_py_keys(self.a, "mt_bring_write"))
 
 
 class RecordReplay(unittest.TestCase):
