@@ -247,7 +247,8 @@ def part_lines(run):
     lines = []
     for part, e in run.parts.items():
         e = e if isinstance(e, dict) else {}
-        lines.append(f"make {part}: exit {e.get('rc', '?')}, {e.get('seconds', '?')} s")
+        lane = f" (lane {e['lane']})" if e.get("lane") else ""
+        lines.append(f"make {part}: exit {e.get('rc', '?')}, {e.get('seconds', '?')} s{lane}")
     return lines
 
 

@@ -3,19 +3,18 @@
 # `make prove`: every proof part, timed, then one report with one strict gate.
 #
 #   1. tools/bootstrap.sh prove   (installs Frama-C/Why3/Z3/CVC4, CBMC 6, TLC; versions printed)
-#   2. the parts, in two lanes that run side by side (the machine has 2 cores; WP's own two
-#      modules at a time fill them, and the other lane takes the gaps):
-#      lane 1: make wp     Frama-C WP on every module, always from source (kernel, laws, the
-#                          ChibiOS port's time arithmetic), canary and WP gate
-#      lane 2: make cbmc   the CBMC harnesses generated from the same ACSL contracts
-#              make cbmc-test  the translator's tests
-#              make chibios-cbmc  CBMC on the ChibiOS port's time arithmetic
-#              make tla    TLC on every CI configuration of tla/models.json
-#              make tla-trace-mission  trace validation of mission*.c against Mission
-#      PROVE_EXTRA="part ..." appends parts (CI: the ring and semaphore traces and the rotating
-#      share of the mutants, which run in lane 1 after WP); PROVE_PARTS="part ..." replaces the
-#      default list;
-#      PROVE_LANES=1 runs everything in one lane, in order.
+#   2. the parts, in two lanes that run side by side (the machine has 2 cores) and take them
+#      from one queue, longest first, each the next part when it is free:
+#        make cbmc   the CBMC harnesses generated from the same ACSL contracts
+#        make wp     Frama-C WP on every module, always from source (kernel, laws, the ChibiOS
+#                    port's time arithmetic), canary and WP gate
+#        make tla    TLC on every CI configuration of tla/models.json
+#        make tla-trace-mission  trace validation of mission*.c against Mission
+#        make cbmc-test  the translator's tests
+#        make chibios-cbmc  CBMC on the ChibiOS port's time arithmetic
+#      PROVE_EXTRA="part ..." adds parts (CI: the ring and semaphore traces and the rotating
+#      share of the mutants); PROVE_PARTS="part ..." replaces the default list;
+#      PROVE_LANES=1 runs everything in one lane, in the queue's order.
 #      PROVE_SHARD=i/N runs shard i of N (tools/prove_shard.py, for a CI job matrix): the plan
 #      splits the WP units (module, function) and (module, lemmas) and the CBMC harnesses over
 #      the N shards, longest first; this shard's part wp runs its WP units, its part cbmc its
@@ -48,13 +47,12 @@ if [ -n "${PROVE_COLD:-}" ]; then echo cold >"$OUT/cache.txt"
 elif [ "${WP_REUSE_LOCAL:-}" = yes ]; then echo reprove >"$OUT/cache.txt"
 else echo warm >"$OUT/cache.txt"; fi
 
-lane1_default="wp"
-lane2_default="cbmc cbmc-test chibios-cbmc tla tla-trace-mission"
+default_parts="wp cbmc cbmc-test chibios-cbmc tla tla-trace-mission"
 # make prove-cold adds the capacity-maximum CBMC tier.
 cold_extra=""
 [ -n "${PROVE_COLD:-}" ] && cold_extra="cbmc-max"
-selected=(${PROVE_PARTS:-$lane1_default $lane2_default $cold_extra ${PROVE_EXTRA:-}})
-report_parts="$lane1_default $lane2_default"
+selected=(${PROVE_PARTS:-$default_parts $cold_extra ${PROVE_EXTRA:-}})
+report_parts="$default_parts"
 if [ -n "${PROVE_SHARD:-}" ]; then
     python3 tools/prove_shard.py plan "$PROVE_SHARD" --parts "${selected[*]}" \
         --default-parts "$report_parts" --out "$OUT" || { echo "prove: no shard plan"; exit 1; }
@@ -68,27 +66,24 @@ if [ -n "${PROVE_SHARD:-}" ]; then
     selected=("${mine[@]}")
     report_parts="${mine[*]}"
 fi
-# Lane 1 takes WP and, after it, the extra parts (CI's traces and mutants, the cold CBMC tier):
-# in CI lane 2's fresh CBMC property runs are the longest part, so the extras balance lane 1.
-# When every property run is fresh (CBMC_RECORD=properties or fresh), the mission traces
-# (about 160 s) move to lane 1 as well: measured in CI, lane 2 was then the longer by 320 s.
-# Since the topic bus's functional contracts (about 180 s more of CBMC property runs) TLC's
-# models (92 s here) and the translator's tests (56 s) move there too.
-lane1_parts=" wp tla-trace prove-selftest prove-selftest-ci cbmc-max "
-case "${CBMC_RECORD:-}" in
-    properties | fresh) lane1_parts+="tla-trace-mission tla cbmc-test " ;;
-esac
-lane1=()
-lane2=()
-for part in "${selected[@]}"; do
-    case "$lane1_parts" in
-        *" $part "*) lane1+=("$part") ;;
-        *) lane2+=("$part") ;;
-    esac
+# The parts form one queue, longest first (the order of QUEUE_ORDER; a part not named there goes
+# last): each lane takes the next part whenever it is free, so no lane idles while parts wait.
+# The two longest start together: WP (about 10 minutes in make prove) and CBMC (about half an
+# hour when every property run is fresh, as in CI; a minute or two when verdicts are replayed).
+# After a kernel edit (make reprove) WP re-runs one module while CBMC re-runs the harnesses that
+# reach the edit, and the lane that ends first takes TLC, the traces and the translator's tests.
+QUEUE_ORDER=(cbmc wp prove-selftest prove-selftest-ci cbmc-max tla-trace tla tla-trace-mission
+             cbmc-test chibios-cbmc chibios-prove)
+parts=()
+for part in "${QUEUE_ORDER[@]}"; do
+    case " ${selected[*]} " in *" $part "*) parts+=("$part") ;; esac
 done
-parts=("${lane1[@]}" "${lane2[@]}")
-if [ "${PROVE_LANES:-2}" = 1 ]; then echo "prove: one lane: ${parts[*]}"
-else echo "prove: lane 1: ${lane1[*]}; lane 2: ${lane2[*]}"; fi
+for part in "${selected[@]}"; do
+    case " ${QUEUE_ORDER[*]} " in *" $part "*) ;; *) parts+=("$part") ;; esac
+done
+lanes="${PROVE_LANES:-2}"
+[ "$lanes" = 1 ] || lanes=2
+echo "prove: $lanes lane(s) take the parts in this order: ${parts[*]}"
 
 # The summaries of the optional parts this run does not make go: the gate reads every summary
 # present, and one left by an earlier run (make prove-selftest, make prove-cold's tier) would
@@ -113,53 +108,61 @@ part_run() {
     esac
 }
 
-# run_part PART: part_run PART with its output in logs/PART.log, then its status in parts/PART.
+# run_part PART LANE: part_run PART with its output in logs/PART.log, then its status in
+# parts/PART.
 run_part() {
-    local part="$1" t0 t1 rc
+    local part="$1" lane="$2" t0 t1 rc
     t0=$(date +%s.%N)
     part_run "$part" >"$OUT/logs/$part.log" 2>&1
     rc=$?
     t1=$(date +%s.%N)
-    printf '%s %s %s\n' "$rc" "$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", b - a }')" \
-        "$t0" >"$OUT/parts/$part"
+    printf '%s %s %s %s\n' "$rc" "$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", b - a }')" \
+        "$t0" "$lane" >"$OUT/parts/$part"
     # one block per part on the console, whole, when it ends (lanes never interleave lines)
     {
         printf '\n==== make %s\n' "$part"
         cat "$OUT/logs/$part.log"
-        printf 'make %s: exit %s, %s s\n' "$part" "$rc" "$(cut -d' ' -f2 "$OUT/parts/$part")"
+        printf 'make %s: exit %s, %s s (lane %s)\n' "$part" "$rc" \
+            "$(cut -d' ' -f2 "$OUT/parts/$part")" "$lane"
     } | flock "$OUT/parts/.console" cat
 }
 
+# run_lane LANE: take the next part from the queue (one line a part; flock: two lanes never take
+# the same one) until it is empty.
+printf '%s\n' "${parts[@]}" >"$OUT/parts/.queue"
+take_part() {
+    flock "$OUT/parts/.queue" sh -c 'head -n 1 "$1"; sed -i 1d "$1"' take "$OUT/parts/.queue"
+}
 run_lane() {
     local part
-    for part in "$@"; do run_part "$part"; done
+    while part=$(take_part) && [ -n "$part" ]; do run_part "$part" "$1"; done
 }
 
-if [ "${PROVE_LANES:-2}" = 1 ]; then
-    run_lane "${parts[@]}"
+if [ "$lanes" = 1 ]; then
+    run_lane 1
 else
-    run_lane "${lane1[@]}" &
+    run_lane 1 &
     lane1_pid=$!
-    run_lane "${lane2[@]}"
+    run_lane 2
     wait "$lane1_pid"
 fi
 
 # json_by_part timing|parts: one JSON object with one member per part, its wall seconds
 # (timing.json) or {"rc", "seconds", "started"} (parts.json; started: epoch seconds).
 json_by_part() {
-    local fmt="$1" sep="" part rc secs started
+    local fmt="$1" sep="" part rc secs started lane
     printf '{'
     for part in "${parts[@]}"; do
         if [ -f "$OUT/parts/$part" ]; then
-            read -r rc secs started <"$OUT/parts/$part"
+            read -r rc secs started lane <"$OUT/parts/$part"
         else
-            rc=127 secs=0 started=0
+            rc=127 secs=0 started=0 lane=0
         fi
         printf '%s' "$sep"
         case "$fmt" in
             timing) printf '"%s": %s' "$part" "$secs" ;;
-            parts) printf '"%s": {"rc": %d, "seconds": %s, "started": %s}' "$part" \
-                       "$rc" "$secs" "$started" ;;
+            parts) printf '"%s": {"rc": %d, "seconds": %s, "started": %s, "lane": %d}' \
+                       "$part" "$rc" "$secs" "$started" "$lane" ;;
         esac
         sep=", "
     done

@@ -26,7 +26,7 @@ STUB_BOOTSTRAP = """#!/bin/sh
 echo "stub bootstrap $*"
 """
 # make PART: touches the part's summary (unless the part is in STUB_STALE), exits 2 for the
-# parts in STUB_FAIL.
+# parts in STUB_FAIL, takes 3 s for the parts in STUB_SLOW.
 STUB_MAKE = """#!/usr/bin/env bash
 part="$2"
 echo "stub make $part"
@@ -44,6 +44,7 @@ case " ${STUB_STALE:-} " in
     *) if [ -n "$f" ]; then touch "$BUILD/proof/$f"; fi ;;
 esac
 case " ${STUB_FAIL:-} " in *" $part "*) exit 2 ;; esac
+case " ${STUB_SLOW:-} " in *" $part "*) sleep 3 ;; esac
 exit 0
 """
 # cbmc ... --function H [--cover assertion]: the property run fails for the harnesses in
@@ -126,11 +127,12 @@ def test_prove_sh_records_every_part_and_passes(prove):
     assert rc == 0, out
     assert "PROVE OK" in out
     parts = prove.parts()
-    assert list(parts) == DEFAULT_PARTS
+    assert sorted(parts) == sorted(DEFAULT_PARTS)
     for p in parts.values():
         assert p["rc"] == 0 and isinstance(p["seconds"], float) and p["started"] > 0
+        assert p["lane"] in (1, 2)
     with open(os.path.join(prove.proof, "timing.json"), encoding="utf-8") as f:
-        assert list(json.load(f)) == DEFAULT_PARTS
+        assert sorted(json.load(f)) == sorted(DEFAULT_PARTS)
 
 
 def test_prove_sh_exit_status_is_the_reports(prove):
@@ -188,15 +190,23 @@ def test_prove_sh_prove_parts_runs_only_those(prove):
     assert list(prove.parts()) == ["wp", "tla"] and "stub make cbmc" not in out
 
 
-def test_prove_sh_lanes_follow_the_cbmc_record_mode(prove):
+def test_prove_sh_lanes_take_the_parts_from_one_queue(prove):
     rc, out = prove.run()
     assert rc == 0, out
-    assert "lane 1: wp; lane 2: cbmc cbmc-test chibios-cbmc tla tla-trace-mission" in out
-    # fresh property runs make lane 2 the long one: the mission traces, TLC's models and the
-    # translator's tests move to lane 1
-    rc, out = prove.run(CBMC_RECORD="properties")
+    assert ("2 lane(s) take the parts in this order: cbmc wp tla tla-trace-mission cbmc-test "
+            "chibios-cbmc\n") in out
+    # while one lane is in a long part, the other takes every part that waits
+    for slow in ("wp", "cbmc"):
+        rc, out = prove.run(STUB_SLOW=slow)
+        assert rc == 0, out
+        lanes = {p: e["lane"] for p, e in prove.parts().items()}
+        assert lanes[slow] in (1, 2) and len(lanes) == 6, lanes
+        assert all(lane == 3 - lanes[slow] for p, lane in lanes.items() if p != slow), lanes
+    rc, out = prove.run(PROVE_LANES="1")
     assert rc == 0, out
-    assert "lane 1: wp cbmc-test tla tla-trace-mission; lane 2: cbmc chibios-cbmc\n" in out
+    assert list(prove.parts()) == ["cbmc", "wp", "tla", "tla-trace-mission", "cbmc-test",
+                                   "chibios-cbmc"]
+    assert {e["lane"] for e in prove.parts().values()} == {1}
 
 
 # ------------------------------------------------------------------------------ run_cbmc.sh
