@@ -46,7 +46,7 @@ help:
 	@echo "Prove"
 	@echo "  make prove           install Frama-C/Why3/Z3/CVC4/CBMC/TLC, prove everything, strict gate"
 	@echo "  make prove-cold      the same with every cache emptied, plus cbmc-max; the report says cold"
-	@echo "  make reprove         developer shortcut: WP modules with unchanged inputs replayed, not proved"
+	@echo "  make reprove         developer shortcut: WP modules, TLC models with unchanged inputs replayed"
 	@echo "  make prove-selftest  seeded bugs (proofs/mutants.json), each rejected as its entry says"
 	@echo "  make prove PROVE_SHARD=i/N;  make prove-merge SHARDS=\"dir ...\"   proofs over N machines"
 	@echo "  make wp | wp-<module> | wp-gate | wp-canary | wp-diversity | wp-cache-save"

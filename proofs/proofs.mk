@@ -3,7 +3,7 @@
 #
 #   make prove          tools/bootstrap.sh prove, then every proof part (tools/prove.sh), strict gate
 #   make prove-cold     the same with every cache emptied (no reused verdict at all)
-#   make reprove        developer shortcut: WP modules with unchanged inputs replayed, not proved
+#   make reprove        developer shortcut: WP modules, TLC models with unchanged inputs replayed
 #   make wp             Frama-C/WP on every kernel module, the data-type laws and the ChibiOS
 #                       port's time arithmetic, 2 modules at a time, always from source, then
 #                       the canary and proofs/wp/gate.py (fails unless 100 % goals + smoke tests)
@@ -113,8 +113,9 @@ prove:
 # Developer shortcut after an edit: as `make prove`, but a WP module whose inputs (its sources,
 # every header of its include folders, the flags, Frama-C's version, the prover configuration)
 # are byte-identical to those of this tree's last run of it is not run again: its report is
-# replayed and the proof report says "replayed, not proved" for it. CBMC replays per harness
-# digest as in `make prove`. Never in CI.
+# replayed and the proof report says "replayed, not proved" for it; TLC's models likewise when
+# every input of tla/run_tlc.py is that of this tree's last passing run (tla/tla.mk). CBMC
+# replays per harness digest as in `make prove`. Never in CI.
 reprove:
 	@WP_REUSE_LOCAL=yes tools/prove.sh
 

@@ -25,8 +25,10 @@ TLA_RUN := python3 tla/run_tlc.py --jar $(TLA_JAR) --out $(TLA_OUT)
 deps-tla:
 	@test -s $(TLA_JAR) || tools/bootstrap.sh prove
 
+# make reprove (WP_REUSE_LOCAL=yes): the models are replayed, not checked, when every input is
+# that of this tree's last passing run (run_tlc.py --reuse-local); make prove checks them all.
 tla: deps-tla
-	@$(TLA_RUN)
+	@$(TLA_RUN) $(if $(filter yes,$(WP_REUSE_LOCAL)),--reuse-local)
 
 tla-deep: deps-tla
 	@$(TLA_RUN) --deep

@@ -413,6 +413,16 @@ def check_tla(run):
                   for m in t.get("models", []) if m.get("ok") is not True]
 
 
+def check_tla_replayed(run):
+    """TLC's summary kept from this tree's last run (identical inputs) is allowed only in `make
+    reprove`, whose report says so; `make prove` and CI check every model."""
+    t = run.sums["tla"]
+    if run.mode == "reprove" or t is None or not t.get("replayed_local"):
+        return []
+    return [f"TLC: models replayed from the local run of {t['replayed_local']}, not checked in "
+            f"this {run.mode} run"]
+
+
 def trace_problems(t, label):
     if t is None:
         return []
@@ -523,6 +533,7 @@ CHECKS = [
     ("cbmc-missing-proof", check_cbmc_missing),
     ("translator", check_translator),
     ("tla", check_tla),
+    ("tla-replayed", check_tla_replayed),
     ("tla-trace-mission", check_trace_mission),
     ("tla-trace", check_trace_all),
     ("chibios-cbmc", check_chibios),

@@ -91,9 +91,9 @@ MODES = {
     "warm": "warm (make prove): Frama-C on every module from source; prover verdicts reused "
             "only for byte-identical tasks (W4), CBMC verdicts per harness digest (B10), as "
             "counted below",
-    "reprove": "reprove (make reprove, a developer shortcut): WP modules whose inputs are "
-               "identical to this tree's last run are replayed, not proved; `make prove` "
-               "proves all",
+    "reprove": "reprove (make reprove, a developer shortcut): WP modules and TLC's models "
+               "whose inputs are identical to this tree's last run are replayed, not proved; "
+               "`make prove` proves all",
 }
 
 
@@ -104,7 +104,8 @@ def build_summary(run, found):
     return {
         "wp": wp_totals(run), "cbmc": cbmc_totals(run),
         "tla": None if s["tla"] is None else {"models": s["tla"].get("total", 0),
-                                              "passed": s["tla"].get("passed", 0)},
+                                              "passed": s["tla"].get("passed", 0),
+                                              "replayed_local": s["tla"].get("replayed_local")},
         "translator": pick(s["translator"], ("tests", "passed", "failed", "skipped")),
         "selftest": selftest_totals(s["selftest"]),
         "tla_trace": None if trace is None else {"traces": trace["total"],
@@ -307,7 +308,9 @@ def other_totals_md(summary):
     md = []
     t = summary["tla"]
     if t:
-        md.append(f"- TLC: {t['passed']}/{t['models']} model configurations as expected")
+        md.append(f"- TLC: {t['passed']}/{t['models']} model configurations as expected"
+                  + (f"; REPLAYED from this tree's run of {t['replayed_local']} (identical "
+                     "inputs), not checked now" if t.get("replayed_local") else ""))
     t = summary["tla_trace"]
     if t:
         md.append(f"- Trace validation (mission*.c against Mission): {t['passed']}/{t['traces']} "
@@ -419,11 +422,12 @@ def console(run, summary, table):
         print(f"PROVE OK: shard {summary['shard']}: partial: everything this shard ran passed "
               "(the verdict is the merge's: make prove-merge)")
         return 0
-    replayed = (summary["wp"] or {}).get("modules_replayed_local") or []
+    replayed = [f"WP {m}" for m in (summary["wp"] or {}).get("modules_replayed_local") or []]
+    if (summary["tla"] or {}).get("replayed_local"):
+        replayed.append("TLC's models")
     if replayed:
-        print(f"REPROVE OK: everything run passed the strict gate; WP modules replayed from "
-              f"this tree's last run, not proved now: {', '.join(replayed)} (make prove "
-              "proves all)")
+        print(f"REPROVE OK: everything run passed the strict gate; replayed from this tree's "
+              f"last run, not proved now: {', '.join(replayed)} (make prove proves all)")
         return 0
     print(f"PROVE OK: everything proved (strict gate, {run.mode})")
     return 0

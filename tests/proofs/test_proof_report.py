@@ -596,10 +596,32 @@ def test_reprove_passes_and_names_the_replayed_modules(proof):
     proof.edit("wp/summary.json", replay_sched)
     res = proof.run()
     assert res.rc == 0 and res.problems == [], res.out
-    assert "REPROVE OK" in res.out and "not proved now: sched" in res.out
+    assert "REPROVE OK" in res.out and "not proved now: WP sched" in res.out
     assert "\nPROVE OK" not in res.out
     with open(os.path.join(proof.proof, "report.md"), encoding="utf-8") as f:
         assert "WP modules replayed, NOT proved in this run" in f.read()
+
+
+def replay_tla(t):
+    t["replayed_local"] = "2026-11-29T05:20:00"
+
+
+@pytest.mark.parametrize("mode", ["warm", "cold"])
+def test_tlc_replayed_from_a_local_run_fails_in_make_prove(proof, mode):
+    put_mode(proof, mode)
+    proof.edit("tla/summary.json", replay_tla)
+    assert_fails(proof.run(), "TLC: models replayed from the local run",
+                 f"not checked in this {mode} run")
+
+
+def test_reprove_passes_and_names_replayed_tlc(proof):
+    put_mode(proof, "reprove")
+    proof.edit("tla/summary.json", replay_tla)
+    res = proof.run()
+    assert res.rc == 0 and res.problems == [], res.out
+    assert "REPROVE OK" in res.out and "not proved now: TLC's models" in res.out
+    with open(os.path.join(proof.proof, "report.md"), encoding="utf-8") as f:
+        assert "REPLAYED from this tree's run of 2026-11-29T05:20:00" in f.read()
 
 
 @pytest.mark.parametrize("mode", ["baseline", "full"])

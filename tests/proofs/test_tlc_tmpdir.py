@@ -25,6 +25,8 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 # or outside its working directory, and prints a TLC-like "no error" log.
 FAKE_JAVA = r"""#!/usr/bin/env python3
 import json, os, sys
+if sys.argv[1:] == ["-version"]:  # run_tlc.py's input digest (--reuse-local)
+    sys.exit(0)
 tmp = [a.split("=", 1)[1] for a in sys.argv[1:] if a.startswith("-Djava.io.tmpdir=")]
 with open(os.environ["FAKE_JAVA_LOG"], "a") as f:
     f.write(json.dumps({"argv": sys.argv[1:], "cwd": os.getcwd()}) + "\n")
@@ -101,3 +103,63 @@ def test_trace_tlc_gives_each_trace_its_own_tmpdir(tmp_path, monkeypatch):
     assert dirs[0][0] != dirs[1][0]
     for w, d in zip(works, dirs):
         assert d[0].startswith(w + os.sep)
+
+
+# A passing TLC log with the state count pinned for the entry in FAKE_DISTINCT.
+FAKE_JAVA_PASS = r"""#!/usr/bin/env python3
+import json, os, sys
+if sys.argv[1:] == ["-version"]:
+    print('openjdk version "17-fake"', file=sys.stderr)
+    sys.exit(0)
+with open(os.environ["FAKE_JAVA_LOG"], "a") as f:
+    f.write(json.dumps({"argv": sys.argv[1:], "cwd": os.getcwd()}) + "\n")
+print("Model checking completed. No error has been found.")
+print("9 states generated, %s distinct states found, 0 states left on queue."
+      % os.environ["FAKE_DISTINCT"])
+"""
+
+
+def test_run_tlc_reuse_local_replays_only_identical_inputs(tmp_path):
+    """make reprove (--reuse-local): a run whose inputs are those of the output folder's last
+    passing run is replayed and marked, any change of an input runs TLC again, and a run
+    without the flag always runs it."""
+    bindir = tmp_path / "bin"
+    put_exec(str(bindir / "java"), FAKE_JAVA_PASS)
+    log = tmp_path / "java.log"
+    log.write_text("")
+    pinned = [e for e in json.load(open(os.path.join(ROOT, "tla", "models.json")))["models"]
+              if e["name"] == "Sem_2w"][0]["distinct_states"]
+    env = dict(os.environ, PATH=str(bindir) + os.pathsep + os.environ["PATH"],
+               FAKE_JAVA_LOG=str(log), FAKE_DISTINCT=str(pinned))
+    jar = tmp_path / "tla2tools.jar"
+    jar.write_text("v1")
+    out = tmp_path / "out"
+
+    def run(*extra):
+        before = len(calls(log))
+        p = subprocess.run([sys.executable, os.path.join(ROOT, "tla", "run_tlc.py"), "--jar",
+                            str(jar), "--out", str(out), "--only", "Sem_2w"] + list(extra),
+                           cwd=ROOT, env=env, capture_output=True, text=True)
+        assert p.returncode == 0, p.stdout + p.stderr
+        with open(out / "summary.json") as f:
+            return len(calls(log)) - before, json.load(f), p.stdout
+
+    ran, s, _ = run("--reuse-local")            # nothing recorded yet: runs
+    assert ran == 1 and s["passed"] == 1 and "replayed_local" not in s
+    ran, s, text = run("--reuse-local")         # same inputs: replayed, marked
+    assert ran == 0 and s["replayed_local"] and "not checked now" in text
+    ran, s, _ = run()                            # make prove: always runs
+    assert ran == 1 and "replayed_local" not in s
+    jar.write_text("v2")                         # another TLC
+    ran, s, _ = run("--reuse-local")
+    assert ran == 1 and "replayed_local" not in s
+    ran, s, _ = run("--reuse-local", "--timeout", "99")   # another option
+    assert ran == 1
+    env["FAKE_DISTINCT"] = "1"                   # a failed run is never replayed
+    p = subprocess.run([sys.executable, os.path.join(ROOT, "tla", "run_tlc.py"), "--jar",
+                        str(jar), "--out", str(out), "--only", "Sem_2w"], cwd=ROOT, env=env,
+                       capture_output=True, text=True)
+    assert p.returncode == 1
+    env["FAKE_DISTINCT"] = str(pinned)
+    ran, s, _ = run("--reuse-local")
+    assert ran == 1 and s["passed"] == 1
