@@ -16,7 +16,9 @@
 #                        every fresh verdict of a passing harness is recorded
 #                        (make cbmc CBMC_RECORD=save)
 #   make cbmc-max        the capacity-maximum tier (ring capacities 2^30 - 1 and 2^30, 31-bit
-#                        indices): slow, run nightly; build/proof/cbmc/summary-max.json
+#                        indices; make prove-cold): only the proofs whose analysed program
+#                        CBMC_BIG=1 changes (18 ring proofs), the others being the default
+#                        tier's program; build/proof/cbmc/summary-max.json
 #   make cbmc-gen        only translate the ACSL contracts (build/proof/cbmc/gen/)
 #   make cbmc-test       the translator's tests (tools/test_acsl2cbmc.sh: pytest over
 #                        tools/acsl2cbmc/tests): sample contract, unsupported constructs, and

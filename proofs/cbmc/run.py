@@ -284,11 +284,10 @@ def preprocessed(argv):
     return _PREPROCESSED[key]
 
 
-def digest(head, v, extra_defines):
-    """The digest of one run's inputs: the text Makefile.common's result-key or cover-key
-    recipe gives keytext.py (the head text, then each source as goto-cc preprocesses it, the
-    repository's path written @ROOT@), cut by keytext.py and hashed; None when a source does
-    not preprocess."""
+def key_text(head, v, extra_defines):
+    """The text Makefile.common's result-key or cover-key recipe gives keytext.py (the head
+    text, then each source as goto-cc preprocesses it, the repository's path written @ROOT@),
+    cut by keytext.py; None when a source does not preprocess."""
     parts = [head]
     for src in v["srcs"].split():
         pp = preprocessed([v["goto_cc"], "-E"] + v["defines"].split() + extra_defines.split()
@@ -299,24 +298,56 @@ def digest(head, v, extra_defines):
     # the recipe's `sed 's|ROOT|@ROOT@|g'`: the path as a basic regular expression
     root = re.compile(re.escape(v["root"]).replace(r"\.", "."))
     text = root.sub("@ROOT@", "".join(parts))
-    return hashlib.sha256(keytext.key_text(text).encode("utf-8")).hexdigest()
+    return keytext.key_text(text)
+
+
+def digest(text):
+    return None if text is None else hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def key_inputs(name, big):
+    """What keys.mk prints for a proof folder (None when make fails)."""
+    p = subprocess.run(["make", "-s", "-C", os.path.join(PROOFS, name), "-f", "Makefile", "-f",
+                        KEYS_MK, "key-inputs"] + (["CBMC_BIG=1"] if big else []),
+                       capture_output=True, text=True, encoding="utf-8")
+    v = dict(line.split("\t", 1) for line in p.stdout.splitlines() if "\t" in line)
+    return v if p.returncode == 0 and len(v) == 9 else None
+
+
+def property_key_text(v):
+    with open(v["makefile_common"], encoding="utf-8") as f:
+        common = f.read()
+    return key_text(f"{v['property_line']}\nresult\n{common}", v, "")
 
 
 def input_keys(name, big):
     """(property run's key, coverage run's key): the digests of `make result-key` and `make
     cover-key` in the proof folder, computed here from the values keys.mk prints (one make
     call, each preprocessed source once per run); (None, None) when make fails."""
-    p = subprocess.run(["make", "-s", "-C", os.path.join(PROOFS, name), "-f", "Makefile", "-f",
-                        KEYS_MK, "key-inputs"] + (["CBMC_BIG=1"] if big else []),
-                       capture_output=True, text=True, encoding="utf-8")
-    v = dict(line.split("\t", 1) for line in p.stdout.splitlines() if "\t" in line)
-    if p.returncode != 0 or len(v) != 9:
+    v = key_inputs(name, big)
+    if v is None:
         return None, None
-    with open(v["makefile_common"], encoding="utf-8") as f:
-        common = f.read()
-    rkey = digest(f"{v['property_line']}\nresult\n{common}", v, "")
-    ckey = digest(f"{v['cover_line']}\ncover {v['cover_defines']}\n", v, v["cover_defines"])
-    return rkey, ckey
+    return digest(property_key_text(v)), digest(
+        key_text(f"{v['cover_line']}\ncover {v['cover_defines']}\n", v, v["cover_defines"]))
+
+
+BIG_DEFINE = "-DMTC_BIG=1"
+
+
+def same_program_in_both_tiers(name):
+    """True when CBMC_BIG=1 changes nothing CBMC analyses in this proof: its property key text
+    (every source as preprocessed, cut to what the harness reaches, and every option) is the
+    default tier's once the one define is taken out of its options line. MTC_BIG changes only the
+    capacity helpers of lib/mtc_objects.[ch]; a harness that never reaches them is the same
+    program in both tiers, and its verdicts are the default tier's (make cbmc)."""
+    v, v_big = key_inputs(name, False), key_inputs(name, True)
+    if v is None or v_big is None or BIG_DEFINE not in v_big["property_line"]:
+        return False
+    text, text_big = property_key_text(v), property_key_text(v_big)
+    if text is None or text_big is None:
+        return False
+    options, rest = text_big.split("\n", 1)
+    return options.replace(BIG_DEFINE, "") + "\n" + rest == text
 
 
 def property_run(name, big, out_root, timeout, rec, key, mode):
@@ -464,6 +495,15 @@ def main():
         print(f"cbmc: CBMC_RECORD={mode}: expected {', '.join(MODES)}", file=sys.stderr)
         return 2
     records = load_records()
+    # The capacity-maximum tier runs only the proofs it changes: the others are the same
+    # program as in the default tier, which make cbmc checks (make prove-cold runs both).
+    same_program = []
+    if args.max:
+        same_program = [n for n in names if same_program_in_both_tiers(n)]
+        names = [n for n in names if n not in same_program]
+        print(f"cbmc-max: {len(names)} proofs reach the capacity helpers MTC_BIG changes; "
+              f"{len(same_program)} are the same program in both tiers (their verdicts are the "
+              "default tier's, make cbmc), not run again")
     tier = "proofs-max" if args.max else "proofs"
     out_root = os.path.join(ROOT, "build/proof/cbmc", tier)
     # Longest first: the recorded CPU time of each property run orders the queue (a harness
@@ -523,6 +563,7 @@ def main():
                "coverage_replayed": replayed,
                "coverage_fresh": sum(e.get("coverage_source") == "fresh" for e in results),
                "tier": "max" if args.max else "default",
+               "same_program_as_default": same_program,
                "seconds": round(total, 1), "missing_proofs": missing,
                "clauses_unchecked": unchecked, "results": results}
     path = args.summary or os.path.join(

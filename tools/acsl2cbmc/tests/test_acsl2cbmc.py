@@ -1000,6 +1000,27 @@ class RecordKeys(unittest.TestCase):
         self.assertNotEqual(keys, self.run_py_keys(self.a, "mt_bring_write"))
 
 
+    @unittest.skipUnless(os.path.exists(os.path.join(BIN, "goto-cc")), "CBMC not installed")
+    def test_max_tier_runs_only_what_it_changes(self):
+        """make cbmc-max (CBMC_BIG=1) skips a proof whose analysed program is the default
+        tier's: the byte ring's write reaches the capacity helpers MTC_BIG changes, the
+        semaphore's init does not; a changed helper body in a copy makes init differ too."""
+        code = ("import sys; sys.path.insert(0, sys.argv[1]); import run; "
+                "print(*[run.same_program_in_both_tiers(n) for n in sys.argv[2:]])")
+
+        def same(root, *names):
+            p = subprocess.run([sys.executable, "-c", code,
+                                os.path.join(root, "proofs", "cbmc")] + list(names),
+                               capture_output=True, text=True, env=dict(os.environ, TOOLS_BIN=BIN))
+            self.assertEqual(p.returncode, 0, p.stderr)
+            return p.stdout.split()
+        self.assertEqual(same(self.a, "mt_bring_write", "mt_sem_init"), ["False", "True"])
+        harness = os.path.join(self.b, "proofs", "cbmc", "proofs", "mt_sem_init",
+                               "mt_sem_init_harness.c")
+        prepend(harness, "#ifdef MTC_BIG\nint mtc_big_seen = 1;\n#endif\n")
+        self.assertEqual(same(self.b, "mt_sem_init"), ["False"])
+
+
 class RecordReplay(unittest.TestCase):
     """proofs/cbmc/run.py's use of the verdict records (B10), on a copy of the tree and its
     records, with the quickest harness: a passing run is recorded; a recorded verdict is
