@@ -127,11 +127,13 @@ run_part() {
     } | flock "$OUT/parts/.console" cat
 }
 
-# run_lane LANE: take the next part from the queue (one line a part; flock: two lanes never take
-# the same one) until it is empty.
+# run_lane LANE: take the next part from the queue (one line a part) until it is empty. The
+# lock is a file of its own: sed -i replaces the queue file, and a lock taken on the replaced
+# file would not keep the other lane out.
 printf '%s\n' "${parts[@]}" >"$OUT/parts/.queue"
 take_part() {
-    flock "$OUT/parts/.queue" sh -c 'head -n 1 "$1"; sed -i 1d "$1"' take "$OUT/parts/.queue"
+    flock "$OUT/parts/.queue.lock" sh -c 'head -n 1 "$1"; sed -i 1d "$1"' take \
+        "$OUT/parts/.queue"
 }
 run_lane() {
     local part

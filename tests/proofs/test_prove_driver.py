@@ -209,6 +209,15 @@ def test_prove_sh_lanes_take_the_parts_from_one_queue(prove):
     assert {e["lane"] for e in prove.parts().values()} == {1}
 
 
+def test_prove_sh_queue_gives_each_part_to_one_lane(prove):
+    """Two lanes taking 40 instant parts as fast as they can: each part runs once."""
+    names = [f"p{i:02d}" for i in range(40)]
+    rc, out = prove.run(PROVE_PARTS=" ".join(names))
+    ran = [line.split()[-1] for line in out.splitlines() if line.startswith("stub make p")]
+    assert sorted(ran) == names, out
+    assert sorted(prove.parts()) == names
+
+
 # ------------------------------------------------------------------------------ run_cbmc.sh
 
 class Chibios:
