@@ -172,7 +172,7 @@ def inputs_digest(args, selected):
     return h.hexdigest()
 
 
-def replay_local(args, summary_path, inputs_path, digest):
+def replay_local(summary_path, inputs_path, digest):
     """The summary of this folder's last run when its inputs were the same and it passed (its
     file rewritten with "replayed_local": the time of that run), else None."""
     try:
@@ -229,7 +229,7 @@ def main():
     inputs = os.path.join(args.out, "inputs-deep.txt" if args.deep else "inputs.txt")
     digest = inputs_digest(args, selected)
     if args.reuse_local and not args.update:
-        summary = replay_local(args, out, inputs, digest)
+        summary = replay_local(out, inputs, digest)
         if summary is not None:
             print("tla: %d/%d replayed from this folder's run of %s (identical inputs): not "
                   "checked now" % (summary["passed"], summary["total"], summary["replayed_local"]))

@@ -16,7 +16,8 @@ Verdict records (assumption B10): proofs/cbmc/records.json holds, per harness, t
 its last passing runs, each with the digest of that run's inputs (`make result-key` and `make
 cover-key` in the proof folder: tool versions, every option, and every source of the binary as
 goto-cc's preprocessor expands it; computed here in one process, input_keys). A run whose
-digest equals the recorded one is replayed from the record instead of being run again. CBMC_RECORD selects:
+digest equals the recorded one is replayed from the record instead of being run again.
+CBMC_RECORD selects:
   replay (default)  replay the property and coverage verdicts whose digest is unchanged
   properties        run every property run (a record with the same digest must agree with it:
                     same number of properties, none failed), replay coverage verdicts (CI)
@@ -337,8 +338,8 @@ BIG_DEFINE = "-DMTC_BIG=1"
 def same_program_in_both_tiers(name):
     """True when CBMC_BIG=1 changes nothing CBMC analyses in this proof: its property key text
     (every source as preprocessed, cut to what the harness reaches, and every option) is the
-    default tier's once the one define is taken out of its options line. MTC_BIG changes only the
-    capacity helpers of lib/mtc_objects.[ch]; a harness that never reaches them is the same
+    default tier's once the one define is taken out of its options line. MTC_BIG changes only
+    the capacity helpers of lib/mtc_objects.[ch]; a harness that never reaches them is the same
     program in both tiers, and its verdicts are the default tier's (make cbmc)."""
     v, v_big = key_inputs(name, False), key_inputs(name, True)
     if v is None or v_big is None or BIG_DEFINE not in v_big["property_line"]:
