@@ -26,8 +26,9 @@
 #   make cbmc-viewer     cbmc-viewer's browsable report (the CBMC starter kit's viewer, pinned
 #                        by tools/bootstrap.sh prove) of each proof named in H="f g ..."
 #                        (default: each proof with a property run in this tree):
-#                        build/proof/cbmc/proofs/<f>/report/html/index.html. A proof whose
-#                        verdicts run.py replayed has no run here: make runs it first.
+#                        build/proof/cbmc/proofs/<f>/report/html/index.html (CBMC_VIEWER_WORK=D:
+#                        D/<f>/...). A proof whose verdicts run.py replayed has no run here:
+#                        make runs it first.
 #   make cbmc-clean
 #
 # The contracts come from the ACSL annotations only (tools/acsl2cbmc); see
@@ -59,14 +60,21 @@ cbmc-test: cbmc-deps
 	@$(PROOF_TOOLS_PYTHON) -c 'import pytest' 2>/dev/null || tools/bootstrap.sh test
 	@MT_REQUIRE_VIEWER=1 $(PROOF_TOOLS_PYTHON) -m pytest -q -p no:cacheprovider tests/proofs/test_cbmc_viewer.py
 
-CBMC_VIEWER_H = $(or $(H),$(notdir $(patsubst %/result.json,%,$(wildcard build/proof/cbmc/proofs/*/result.json))))
+# CBMC_VIEWER_WORK=D: the runs and reports go to D/<f>/ and the translated contracts to D/gen/
+# instead of build/proof/cbmc/ (the viewer's test, which may run while `make prove` does).
+CBMC_VIEWER_WORK ?=
+CBMC_VIEWER_OUT := $(or $(CBMC_VIEWER_WORK),build/proof/cbmc/proofs)
+cbmc_viewer_dirs = $(if $(CBMC_VIEWER_WORK),OUT=$(abspath $(CBMC_VIEWER_WORK))/$(1) \
+    GEN=$(abspath $(CBMC_VIEWER_WORK))/gen)
+CBMC_VIEWER_H = $(or $(H),$(notdir $(patsubst %/result.json,%,$(wildcard $(CBMC_VIEWER_OUT)/*/result.json))))
 cbmc-viewer: cbmc-deps
 	@[ -n "$(strip $(CBMC_VIEWER_H))" ] || \
 	    { echo "cbmc-viewer: name the proofs (H=...): none has run in this tree" >&2; exit 2; }
 	@for h in $(CBMC_VIEWER_H); do \
 	    [ -f proofs/cbmc/proofs/$$h/cbmc-proof.txt ] || { echo "cbmc-viewer: no proof $$h" >&2; exit 2; }; \
-	    $(MAKE) --no-print-directory -s -C proofs/cbmc/proofs/$$h report || exit 1; \
-	    echo "cbmc-viewer: build/proof/cbmc/proofs/$$h/report/html/index.html"; done
+	    $(MAKE) --no-print-directory -s -C proofs/cbmc/proofs/$$h report \
+	        $(call cbmc_viewer_dirs,$$h) || exit 1; \
+	    echo "cbmc-viewer: $(CBMC_VIEWER_OUT)/$$h/report/html/index.html"; done
 
 cbmc-clean:
 	rm -rf $(BUILD)/proof/cbmc
