@@ -24,8 +24,11 @@ def run_timed(cmd, timeout, cwd=None, env=None):
     t0 = time.monotonic()
     fired = threading.Event()
     with tempfile.TemporaryFile(mode="w+") as log:
+        # a process group, not a session: with the kernel's autogroup scheduling each session
+        # gets an equal share of the CPU whatever its nice value, so a session per run would
+        # take CPU from the tests CI runs beside the proofs at a lower priority (.ci/run)
         p = subprocess.Popen(cmd, cwd=cwd, env=env, stdout=log, stderr=subprocess.STDOUT, text=True,
-                             start_new_session=True)
+                             process_group=0)
 
         def kill():
             fired.set()

@@ -47,3 +47,12 @@ def test_the_time_limit_kills_the_whole_group(tmp_path):
 def test_a_run_that_ends_in_time_is_not_timed_out():
     r = run_timed(["sh", "-c", "kill -KILL $$"], 30)
     assert r.rc == -signal.SIGKILL and not r.timed_out
+
+
+def test_a_run_has_a_group_of_its_own_in_the_callers_session():
+    # its own process group (the time limit kills the group), but not its own session: a session
+    # is an autogroup of the scheduler, which would void the nice value CI gives the proofs
+    r = run_timed(["sh", "-c", "ps -o pid=,pgid=,sid= -p $$"], 30)
+    pid, pgid, sid = (int(x) for x in r.out.split())
+    assert pgid == pid != os.getpgrp()
+    assert sid == os.getsid(0)
