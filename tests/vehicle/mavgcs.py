@@ -78,6 +78,17 @@ class Session:
                 self.out, self.err = self.proc.communicate()
             self.rc = self.proc.returncode
 
+    def rx_drops(self):
+        """Datagrams the kernel dropped at this ground station's socket (receive buffer full:
+        the vehicle sent them, this side did not read in time; /proc/net/udp, column drops)."""
+        inode = str(os.fstat(self.conn.port.fileno()).st_ino)
+        with open("/proc/net/udp", encoding="ascii") as f:
+            for line in f.readlines()[1:]:
+                cols = line.split()
+                if cols[9] == inode:
+                    return int(cols[12])
+        raise RuntimeError("socket inode %s not in /proc/net/udp" % inode)
+
     def vehicle(self):
         """The vehicle's target (system, component) for the messages the GCS sends."""
         return self.conn.target_system, self.conn.target_component
