@@ -899,6 +899,17 @@ def prepend(path, text):
         f.write(text + body)
 
 
+def lower_ring_cap(root):
+    """A one-line header change in the copy at root: the byte ring's largest capacity."""
+    ring_h = os.path.join(root, "kernel", "include", "mt", "ring.h")
+    with open(ring_h, encoding="utf-8") as f:
+        text = f.read()
+    assert "#define MT_BRING_CAP_MAX 0x40000000u" in text
+    with open(ring_h, "w", encoding="utf-8") as f:
+        f.write(text.replace("#define MT_BRING_CAP_MAX 0x40000000u",
+                             "#define MT_BRING_CAP_MAX 0x3FFFFFFFu"))
+
+
 class RecordKeys(unittest.TestCase):
     """The digests that decide whether a recorded CBMC verdict may be replayed (assumption
     B10): the same for the same inputs at another path, different after a one-line change of
@@ -931,12 +942,7 @@ class RecordKeys(unittest.TestCase):
         # keytext.py: a moved header line is not in the key; a new declaration is
         prepend(os.path.join(self.b, "kernel", "include", "mt", "ring.h"), "/* moved */\n")
         self.assertEqual(k_a, self.cover_key(self.b), "a moved header line changed the key")
-        ring_h = os.path.join(self.b, "kernel", "include", "mt", "ring.h")
-        with open(ring_h, encoding="utf-8") as f:
-            text = f.read()
-        with open(ring_h, "w", encoding="utf-8") as f:
-            f.write(text.replace("#define MT_BRING_CAP_MAX 0x40000000u",
-                                 "#define MT_BRING_CAP_MAX 0x3FFFFFFFu"))
+        lower_ring_cap(self.b)
         self.assertNotEqual(k_a, self.cover_key(self.b), "a header change is not in the key")
 
     @unittest.skipUnless(os.path.exists(os.path.join(BIN, "goto-cc")), "CBMC not installed")
@@ -989,12 +995,7 @@ class RecordKeys(unittest.TestCase):
             keys = self.run_py_keys(self.a, name)
             self.assertEqual(keys, self.make_keys(self.a, name), name)
             self.assertEqual(len(set(keys)), 2, name)
-        ring_h = os.path.join(self.b, "kernel", "include", "mt", "ring.h")
-        with open(ring_h, encoding="utf-8") as f:
-            text = f.read()
-        with open(ring_h, "w", encoding="utf-8") as f:
-            f.write(text.replace("#define MT_BRING_CAP_MAX 0x40000000u",
-                                 "#define MT_BRING_CAP_MAX 0x3FFFFFFFu"))
+        lower_ring_cap(self.b)
         keys = self.run_py_keys(self.b, "mt_bring_write")
         self.assertEqual(keys, self.make_keys(self.b, "mt_bring_write"))
         self.assertNotEqual(keys, self.run_py_keys(self.a, "mt_bring_write"))
