@@ -58,6 +58,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/socket.h>
+#include <sys/uio.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -92,10 +93,11 @@ typedef struct {
     struct sockaddr_in gcs;   /* where the link sends: --mavlink's address, then the last sender */
     uint64_t link_rx_bytes;   /* into the vehicle's receive ring */
     uint32_t link_rx_dropped; /* datagrams that did not fit (the receive ring, or 2 KB) */
-    uint64_t link_tx_bytes;   /* out of the vehicle's transmit ring */
-    uint32_t link_tx_errors;  /* datagrams sendto refused (nobody listening, ...) */
-    double speedup;           /* simulated time at speedup x the wall clock; 0: free-running */
-    bool signing;             /* --signing-key given */
+    uint32_t link_sock_dropped; /* datagrams the kernel dropped, the socket's buffer full */
+    uint64_t link_tx_bytes;     /* out of the vehicle's transmit ring */
+    uint32_t link_tx_errors;    /* datagrams sendto refused (nobody listening, ...) */
+    double speedup;             /* simulated time at speedup x the wall clock; 0: free-running */
+    bool signing;               /* --signing-key given */
     uint8_t key[32];
     /* simulated time */
     uint64_t next_sample;
@@ -162,6 +164,7 @@ static bool link_open(sitl_t *s, const char *spec)
     char *end = NULL;
     unsigned long port;
     struct sockaddr_in any;
+    const int one = 1;
 
     if (strncmp(spec, "udp:", 4u) != 0) {
         return false;
@@ -190,7 +193,28 @@ static bool link_open(sitl_t *s, const char *spec)
         fprintf(stderr, "sitl: cannot open a UDP socket for --mavlink\n");
         exit(2);
     }
+    /* the kernel's count of datagrams it dropped at this socket comes with each one received */
+    if (setsockopt(s->link_fd, SOL_SOCKET, SO_RXQ_OVFL, &one, sizeof(one)) != 0) {
+        fprintf(stderr, "sitl: cannot count the UDP socket's drops (SO_RXQ_OVFL)\n");
+        exit(2);
+    }
     return true;
+}
+
+/* The kernel's drop count (cumulative, SO_RXQ_OVFL) if the datagram just received carries it. */
+static void note_sock_drops(sitl_t *s, struct msghdr *msg)
+{
+    struct cmsghdr *c;
+
+    for (c = CMSG_FIRSTHDR(msg); c != NULL; c = CMSG_NXTHDR(msg, c)) {
+        if ((c->cmsg_level == SOL_SOCKET) && (c->cmsg_type == SO_RXQ_OVFL)) {
+            uint32_t d;
+            memcpy(&d, CMSG_DATA(c), sizeof(d));
+            if (d > s->link_sock_dropped) {
+                s->link_sock_dropped = d;
+            }
+        }
+    }
 }
 
 /* Datagrams in (whole, or dropped and counted when the ring cannot take them), the transmit
@@ -204,13 +228,25 @@ static void link_pump(sitl_t *s)
 
     while (s->link_fd >= 0) {
         struct sockaddr_in from;
-        socklen_t flen = sizeof(from);
+        struct iovec iov = {buf, sizeof(buf)};
+        union {
+            char b[CMSG_SPACE(sizeof(uint32_t))];
+            struct cmsghdr align;
+        } ctl;
+        struct msghdr msg;
+        memset(&msg, 0, sizeof(msg));
+        msg.msg_name = &from;
+        msg.msg_namelen = sizeof(from);
+        msg.msg_iov = &iov;
+        msg.msg_iovlen = 1;
+        msg.msg_control = ctl.b;
+        msg.msg_controllen = sizeof(ctl.b);
         /* MSG_TRUNC: the datagram's real length, so one larger than buf is seen (and dropped) */
-        ssize_t got =
-            recvfrom(s->link_fd, buf, sizeof(buf), MSG_TRUNC, (struct sockaddr *)&from, &flen);
+        ssize_t got = recvmsg(s->link_fd, &msg, MSG_TRUNC);
         if (got <= 0) {
             break;
         }
+        note_sock_drops(s, &msg);
         s->gcs = from; /* answer whoever talks to the vehicle */
         if (((size_t)got > sizeof(buf)) || (mt_bring_space(rx) < (uint32_t)got)) {
             s->link_rx_dropped++;
@@ -924,11 +960,13 @@ int main(int argc, char **argv)
                    (unsigned long long)g.overrun_runs, g_overrun_name, (unsigned)g.overrun_us);
     }
     if (g.link_fd >= 0) {
-        veh_printf("MAVLink udp: %llu bytes received, %u datagrams dropped (receive ring full or "
-                   "over 2 KB), "
+        veh_printf("MAVLink udp: %llu bytes received, %u datagrams dropped (%u: receive ring full "
+                   "or over 2 KB; %u: the socket's buffer full), "
                    "%llu bytes sent, %u datagrams refused\n",
-                   (unsigned long long)g.link_rx_bytes, (unsigned)g.link_rx_dropped,
-                   (unsigned long long)g.link_tx_bytes, (unsigned)g.link_tx_errors);
+                   (unsigned long long)g.link_rx_bytes,
+                   (unsigned)(g.link_rx_dropped + g.link_sock_dropped), (unsigned)g.link_rx_dropped,
+                   (unsigned)g.link_sock_dropped, (unsigned long long)g.link_tx_bytes,
+                   (unsigned)g.link_tx_errors);
         (void)close(g.link_fd);
     }
     if (g.trace != NULL) {
