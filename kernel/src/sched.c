@@ -59,6 +59,8 @@ mt_status_t mt_sched_validate(const mt_task_t *tasks, uint32_t n, uint32_t loop_
     }
     /*@ loop invariant 0 <= i <= n;
         loop invariant \forall integer j; 0 <= j < i ==> MtTaskOk(tasks + j, loop_rate_hz);
+        loop invariant \forall integer j; 0 <= j < i ==>
+            MtEntryStatus(tasks, j, loop_rate_hz) == MT_OK;
         loop invariant \forall integer j; 0 <= j < i - 1 ==> tasks[j].priority <= tasks[j + 1].priority;
         loop assigns i;
         loop variant n - i;

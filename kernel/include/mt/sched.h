@@ -172,6 +172,32 @@ typedef struct {
         t->priority < MT_SCHED_FAST_PRIO_LIMIT ? 1 : (rate_hz * 1000) / t->rate_mhz;
 */
 
+/* The status of entry i of a table: the first rule it breaks, in the order fn, rate, budget,
+ * order; MT_OK when it breaks none (MtTaskOk and not below the previous entry's priority). */
+/*@ logic integer MtEntryStatus(mt_task_t *tasks, integer i, integer rate_hz) =
+        tasks[i].fn == \null ? MT_E_TASK_FN :
+        (tasks[i].priority < MT_SCHED_FAST_PRIO_LIMIT ? tasks[i].rate_mhz != 0
+            : tasks[i].rate_mhz < 1 || tasks[i].rate_mhz > rate_hz * 1000) ? MT_E_TASK_RATE :
+        (tasks[i].budget_us > 1000000 / rate_hz ||
+         (tasks[i].priority >= MT_SCHED_FAST_PRIO_LIMIT && tasks[i].budget_us < 1)) ?
+            MT_E_TASK_BUDGET :
+        (i > 0 && tasks[i - 1].priority > tasks[i].priority) ? MT_E_TASK_ORDER : MT_OK;
+
+    predicate MtRateOk(integer rate_hz) = MT_SCHED_RATE_MIN <= rate_hz <= MT_SCHED_RATE_MAX;
+*/
+
+/* What a rejected table is reported as (status r, index bad): a loop-rate problem, then a
+ * count problem, names n; an entry problem names the first faulty entry, with its status. */
+/*@ predicate MtTableRejected(mt_task_t *tasks, integer n, integer rate_hz, integer r,
+                               integer bad) =
+        (!MtRateOk(rate_hz) ==> r == MT_E_LOOP_RATE && bad == n) &&
+        (MtRateOk(rate_hz) && (n < 1 || n > MT_CFG_SCHED_MAX_TASKS) ==>
+            r == MT_E_TASK_COUNT && bad == n) &&
+        (MtRateOk(rate_hz) && 1 <= n <= MT_CFG_SCHED_MAX_TASKS ==>
+            0 <= bad < n && r == MtEntryStatus(tasks, bad, rate_hz) &&
+            \forall integer j; 0 <= j < bad ==> MtEntryStatus(tasks, j, rate_hz) == MT_OK);
+*/
+
 /* The fields of tasks[0 .. n - 1] that the predicates above read are the same at L1 and L2. */
 /*@ predicate MtTableKept{L1, L2}(mt_task_t *t, integer n) =
         \forall integer i; 0 <= i < n ==>
@@ -297,6 +323,7 @@ typedef struct {
     ensures fn: tasks[i].fn == \null ==> \result == MT_E_TASK_FN;
     ensures status: \result == MT_OK || \result == MT_E_TASK_FN || \result == MT_E_TASK_RATE ||
                     \result == MT_E_TASK_BUDGET || \result == MT_E_TASK_ORDER;
+    ensures exact: \result == MtEntryStatus(tasks, i, loop_rate_hz);
 */
 mt_status_t mt_sched_check_entry(const mt_task_t *tasks, uint32_t n, uint32_t i,
                                  uint32_t loop_rate_hz);
@@ -315,6 +342,9 @@ mt_status_t mt_sched_check_entry(const mt_task_t *tasks, uint32_t n, uint32_t i,
                   \result == MT_E_LOOP_RATE;
     ensures count: MT_SCHED_RATE_MIN <= loop_rate_hz <= MT_SCHED_RATE_MAX ==>
                    (n < 1 || n > MT_CFG_SCHED_MAX_TASKS) ==> \result == MT_E_TASK_COUNT;
+    ensures first: \result != MT_OK ==>
+        MtTableRejected(tasks, n, loop_rate_hz, \result, *bad_index);
+    ensures kept: \result == MT_OK ==> *bad_index == \old(*bad_index);
 */
 mt_status_t mt_sched_validate(const mt_task_t *tasks, uint32_t n, uint32_t loop_rate_hz,
                               uint32_t *bad_index);
@@ -333,9 +363,11 @@ mt_status_t mt_sched_validate(const mt_task_t *tasks, uint32_t n, uint32_t loop_
                      s->tasks == tasks && s->ntasks == n && s->loop_rate_hz == loop_rate_hz;
       ensures zeroed: \forall integer i; 0 <= i < n ==> s->st[i].runs == 0 && s->st[i].last_run == 0 &&
                       s->st[i].slips == 0 && s->st[i].overruns == 0;
+      ensures index_kept: *bad_index == \old(*bad_index);
     behavior rejected:
       assumes !MtTableOk(tasks, n, loop_rate_hz);
       ensures status: \result != MT_OK;
+      ensures reported: MtTableRejected(tasks, n, loop_rate_hz, \result, *bad_index);
       ensures untouched: *s == \old(*s);
     complete behaviors;
     disjoint behaviors;
