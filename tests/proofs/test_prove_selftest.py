@@ -133,6 +133,25 @@ def test_mutant_find_text_occurs_exactly_once_in_its_file(m):
     assert m["find"] != m["replace"]
 
 
+_run_spec = importlib.util.spec_from_file_location(
+    "cbmc_run", os.path.join(ROOT, "proofs", "cbmc", "run.py"))
+cbmc_run = importlib.util.module_from_spec(_run_spec)
+_run_spec.loader.exec_module(cbmc_run)
+
+
+@pytest.mark.parametrize("m", MUTANTS, ids=IDS)
+def test_mutant_harness_checks_the_cbmc_clauses_it_names(m):
+    """A folder on part of a function's clauses (CLAUSES, B17) must be the one that checks the
+    clauses the mutant names: M46 named a notifier clause but ran the folder without it, and
+    CBMC accepted the mutant."""
+    harness = m.get("harness", m["function"])
+    selected = cbmc_run.proof_clauses(harness)
+    for name in (m.get("clauses") or {}).get("cbmc", []):
+        tag = name.split(": ensures ", 1)[-1].replace(".", "_")
+        assert selected is None or tag in selected, \
+            f"{m['id']}: harness folder {harness} does not check {name!r} (CLAUSES {selected})"
+
+
 # --- named clauses ------------------------------------------------------------------------
 
 def test_a_failure_of_a_named_clause_rejects():
