@@ -471,6 +471,8 @@ uint32_t mt_sched_time_available_us(const mt_sched_t *s);
 /** Load in permille: 1000 when the filtered loop rate is below 95% of the
  *  loop rate; otherwise 1000 * (period - mean spare) / period, 0 when the
  *  mean spare time is at least the period; 0 before the first loop. */
+/*@ logic integer MtClampU32(integer v) = v > 0xFFFFFFFF ? 0xFFFFFFFF : v; */
+
 /*@ requires inv: MtSchedInv(s);
     assigns \nothing;
     ensures range: 0 <= \result <= 1000;
@@ -487,6 +489,12 @@ uint32_t mt_sched_load_permille(const mt_sched_t *s);
     ensures runs: r->runs == s->st[i].runs;
     ensures mean_guarded: s->st[i].runs == 0 ==> r->mean_us == 0;
     ensures pending: r->pending == (s->tick - s->st[i].last_run) / s->st[i].interval;
+    ensures mean: s->st[i].runs > 0 ==>
+        r->mean_us == MtClampU32(s->st[i].total_us / s->st[i].runs);
+    ensures copied: r->name == s->tasks[i].name && r->min_us == s->st[i].min_us &&
+        r->max_us == s->st[i].max_us && r->overruns == s->st[i].overruns &&
+        r->slips == s->st[i].slips && r->not_achieved == s->st[i].not_achieved &&
+        r->budget_skips == s->st[i].budget_skips && r->interval == s->st[i].interval;
 */
 void mt_sched_task_report(const mt_sched_t *s, uint32_t i, mt_task_report_t *r);
 
