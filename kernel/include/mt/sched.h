@@ -468,11 +468,12 @@ void mt_sched_loop_once(mt_sched_t *s, mt_sample_wait_fn_t wait, void *ctx);
 */
 uint32_t mt_sched_time_available_us(const mt_sched_t *s);
 
+/* A 64-bit mean as the reports give it: clamped to 32 bits (mt_clamp_u32). */
+/*@ logic integer MtClampU32(integer v) = v > 0xFFFFFFFF ? 0xFFFFFFFF : v; */
+
 /** Load in permille: 1000 when the filtered loop rate is below 95% of the
  *  loop rate; otherwise 1000 * (period - mean spare) / period, 0 when the
  *  mean spare time is at least the period; 0 before the first loop. */
-/*@ logic integer MtClampU32(integer v) = v > 0xFFFFFFFF ? 0xFFFFFFFF : v; */
-
 /*@ requires inv: MtSchedInv(s);
     assigns \nothing;
     ensures range: 0 <= \result <= 1000;
