@@ -31,6 +31,9 @@ Semantics of the translation (see proofs/cbmc/README.md for the full list):
     (Translator.divide): 32 or 64 bits when the operands' ranges, derived from the C types
     they are read from, fit; __int128 when a range can leave 64 bits; otherwise 64 bits behind
     an assertion that the operands are in range (a failed assertion, never a wrong value).
+  * a & b (bitwise and) where both operands' ranges are known and non-negative (a logic
+    function's value range is its body's, e.g. a table of constants): the C operator on
+    __int128, which equals ACSL's there.
   * booleans read from C memory are normalised with `!= 0`.
   * \\old(e) reads memory through the snapshot registry (proofs/cbmc/lib/mtc.c): the harness
     copies every object it allocated (deep: buffers are objects of their own) before the call.
@@ -45,7 +48,8 @@ Semantics of the translation (see proofs/cbmc/README.md for the full list):
   * assigns: every location of every snapshotted object that no assigns location covers must be
     unchanged (one nondeterministic index per array, so whole arrays are checked); locations are
     evaluated in the pre-state, as in ACSL.
-Anything else (\\at, \\let, lemmas, axiomatics, bitwise operators, casts to machine integers, ...)
+Lemmas are not translated (WP proves them; those over two states or pointers are listed as
+skipped). Anything else (\\at, \\let, axiomatics, |, ^, shifts, casts to machine integers, ...)
 stops the tool with an error naming the file, function and construct: no clause is ever dropped.
 """
 

@@ -145,10 +145,18 @@ class AParser:
         return e
 
     def bitor(self):
-        e = self.equality()
-        for op in ("|", "^", "&", "-->", "<-->"):
-            if self.at(op) and not (op == "&" and self.at("&", 1)):
+        e = self.bitand()
+        for op in ("|", "^", "-->", "<-->"):
+            if self.at(op):
                 fail(self.where, f"unsupported ACSL construct: bitwise operator {op!r}")
+        return e
+
+    def bitand(self):
+        # C's precedence: & binds looser than == (write (a & m) != 0)
+        e = self.equality()
+        while self.at("&") and not self.at("&", 1):
+            self.take()
+            e = ("bin", "&", e, self.equality())
         return e
 
     def equality(self):

@@ -42,6 +42,7 @@ class LogicDef:
             kind, name, ret, params, body, where
         self.labels = tuple(labels)   # two-state definitions: expanded at each use
         self.abstract = False         # declared in an axiomatic block, no definition
+        self.rng = None               # a logic function's value bounds, once its body is read
 
 
 def parse_contract(fc, where, is_type):
@@ -165,6 +166,18 @@ def skip_definition(p):
                 return
 
 
+def quantifies_pointers(p):
+    """Whether the expression ahead opens with a quantifier whose binder names a pointer."""
+    if not (p.at("\\forall") or p.at("\\exists")):
+        return False
+    j = 1
+    while p.peek(j) is not None and p.peek(j).text != ";":
+        if p.peek(j).text == "*":
+            return True
+        j += 1
+    return False
+
+
 def parse_logic_block(prog, text, where, is_type):
     toks = acsl_tokens(strip_annotation(text), where)
     p = AParser(toks, where, is_type)
@@ -257,6 +270,10 @@ def parse_logic_block(prog, text, where, is_type):
                 prog.skipped.append(f"{where}: lemma {name} (two memory states, WP only)")
                 continue
             p.take(":")
+            if quantifies_pointers(p):
+                skip_definition(p)
+                prog.skipped.append(f"{where}: lemma {name} (over pointers, WP only)")
+                continue
             body = p.expr()
             p.take(";")
             prog.lemmas.append((name, body, f"{where}: lemma {name}"))

@@ -71,6 +71,7 @@ def gen_logic(prog, tr, incs):
                 fail(ld.where, f"unsupported logic return type {ld.ret}")
             body, lt = tr.term(ld.body, ctx)
             tr.want(lt, "int", ld.body, ld.where)
+            ld.rng = lt.rng   # bounds its uses in later definitions and in contracts carry
             ret = INT128
         helpers = tr.helpers[start:]
         del tr.helpers[start:]

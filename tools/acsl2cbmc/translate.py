@@ -23,6 +23,8 @@ class LT:
 
 
 U32_MAX = (1 << 32) - 1
+I32_MIN = -(1 << 31)
+I32_MAX = (1 << 31) - 1
 U64_MAX = (1 << 64) - 1
 I64_MIN = -(1 << 63)
 I128_MAX = (1 << 127) - 1
@@ -74,6 +76,8 @@ def rng_op(op, ra, rb):
     if op == "*":
         c = [x * y for x in ra for y in rb]
         return (min(c), max(c))
+    if op == "&" and ra[0] >= 0 and rb[0] >= 0:
+        return (0, min(ra[1], rb[1]))
     if op in ("/", "%") and ra[0] >= 0 and rb[0] >= 1:
         if op == "/":
             return (ra[0] // rb[1], ra[1] // rb[0])
@@ -373,6 +377,11 @@ class Translator:
             self.want(lb, "int", e[3], w)
             if op in ("/", "%"):
                 return self.divide(op, a, la, b, lb)
+            if op == "&" and not all(rg is not None and rg[0] >= 0 for rg in (la.rng, lb.rng)):
+                # the C operator on the two's complement of a wider type equals ACSL's only
+                # where both operands are non-negative; that is the only use supported
+                fail(w, f"unsupported: bitwise & on an operand not known to be non-negative "
+                     f"({self.show(e)})")
             r = rng_op(op, la.rng, lb.rng)
             if (op == "*" and la.rng is not None and lb.rng is not None and la.rng[0] >= 0
                     and lb.rng[0] >= 0 and U64_MAX < r[1] <= I128_MAX):
@@ -425,8 +434,8 @@ class Translator:
         width W holds, the W-bit operation gives the same value as the __int128 one. CBMC's
         circuit for a 128-bit signed division is many times that of a 64-bit one, and when the
         kernel divides the same values at the same width the solver can share one circuit.
-          * both ranges known: the narrowest of unsigned 32, unsigned 64 and signed 64 bits
-            that holds them, without a check; __int128 when none does and a range can leave
+          * both ranges known: the narrowest of unsigned 32, signed 32, unsigned 64 and signed
+            64 bits that holds them (and the quotient), without a check; __int128 when none does and a range can leave
             the signed and unsigned 64-bit ranges (e.g. ticks * 10^6), through MTC_UDIV128 /
             MTC_UMOD128 when both are non-negative (the operator, or the model of B11);
           * a dividend known to be in (-2^64, 2^64) but not of one sign (a difference of two
@@ -447,6 +456,11 @@ class Translator:
         ra, rb = la.rng, lb.rng
         if within(ra, 0, U32_MAX) and within(rb, 0, U32_MAX):
             return f"(({INT128})((unsigned int)({a}) {op} (unsigned int)({b})))", out
+        if (within(ra, I32_MIN, I32_MAX) and within(rb, I32_MIN, I32_MAX)
+                and not (ra[0] == I32_MIN and rb[0] <= -1 <= rb[1])):
+            # signed 32 bits, the width of the kernel's int32_t arithmetic (INT_MIN / -1, the
+            # one quotient that leaves it, excluded by the ranges)
+            return f"(({INT128})((int)({a}) {op} (int)({b})))", out
         if within(ra, 0, U64_MAX) and within(rb, 0, U64_MAX):
             return (f"(({INT128})((unsigned long long)({a}) {op} (unsigned long long)({b})))",
                     out)
@@ -507,7 +521,7 @@ class Translator:
         fn = f"mtc_{ld.name}({', '.join(cargs)})"
         if ld.kind == "predicate":
             return fn, LT("bool")
-        return fn, LT("int")
+        return fn, LT("int", rng=ld.rng)
 
     STATE_LABELS = {"Pre": "old", "Old": "old", "Post": "here", "Here": "here"}
 

@@ -264,7 +264,9 @@ class Unsupported(unittest.TestCase):
     CASES = {
         "at": ("ensures e: c->n == \\at(c->n, Pre);", r"\\at"),
         "let": ("ensures e: \\let k = c->n; k == 0;", r"\\let"),
-        "bitwise": ("ensures e: (c->n & 1) == 0;", "bitwise operator"),
+        "bitwise": ("ensures e: (c->n | 1) == 0;", "bitwise operator '\\|'"),
+        "bitwise_signed": ("ensures e: ((c->n - 5) & 1) == 0;",
+                           "bitwise & on an operand not known to be non-negative"),
         "machine_cast": ("ensures e: (uint8_t)c->n == 0;", "cast to the machine type"),
         "unbounded_exists": ("requires e: \\exists integer i; c->buf[i] == 0 && i == 0;",
                              "cannot find the bounds"),
@@ -307,6 +309,26 @@ class Unsupported(unittest.TestCase):
                 self.assertEqual(r.returncode, 2, r.stdout + r.stderr)
                 self.assertRegex(r.stderr, want)
                 self.assertIn("acsl2cbmc: error:", r.stderr)
+
+
+class BitwiseAnd(unittest.TestCase):
+    """a & b on operands known to be non-negative: a C fact, with the range a logic function's
+    body gives its value (a table of constants) carried to its uses."""
+
+    def test_translated(self):
+        d = os.path.join(WORK, "bitwise_and")
+        shutil.rmtree(d, ignore_errors=True)
+        h = ("#include <stdint.h>\ntypedef struct { uint32_t n; } mt_c_t;\n"
+             "/*@ logic integer Flags(integer id) = id == 3 ? 0x05 : id == 7 ? 0x02 : 0x00;\n"
+             "    predicate Loc(integer id) = (Flags(id) & 0x01) != 0; */\n"
+             "/*@ requires v: \\valid(c);\n    assigns \\nothing;\n"
+             "    ensures odd: \\result == ((c->n & 1) != 0);\n"
+             "    ensures loc: Loc(c->n) ==> \\result == 1; */\nint mt_c_f(mt_c_t *c);\n")
+        write(os.path.join(d, "c.h"), h)
+        r = translate([os.path.join(d, "c.h")], [d], os.path.join(d, "gen"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(d, "gen", "mtc_logic.h")) as f:
+            self.assertIn("(mtc_Flags(mtc_st, mtc_p_id) & ((__int128)0x01ull))", f.read())
 
 
 TWO_STATE_H = r"""
@@ -706,8 +728,8 @@ class ClauseSelection(unittest.TestCase):
 
 
 class Division(unittest.TestCase):
-    """ACSL / and % at the narrowest exact width (Translator.divide): unsigned 32 and 64 bits
-    and signed 64 bits where the operands' ranges are known, a checked 64-bit division where
+    """ACSL / and % at the narrowest exact width (Translator.divide): unsigned and signed 32
+    bits, unsigned and signed 64 bits where the operands' ranges are known, a checked 64-bit division where
     they are not (logic-function parameters, differences), __int128 where they can leave 64
     bits. Negative operands keep ACSL's truncation; a value outside the checked range is a
     failed check under its own description, not a wrong quotient."""
@@ -740,7 +762,7 @@ class Division(unittest.TestCase):
         self.assertIn("(unsigned int)(((__int128)(a))) / (unsigned int)(((__int128)(b)))",
                       self.gen("mt_q32_contract.h"))                   # uint32: unsigned 32
         self.assertIn("mtc_udiv64(", self.gen("mt_q64_contract.h"))       # a difference
-        self.assertIn("(long long)(", self.gen("mt_qs_contract.h"))       # int32: signed 64
+        self.assertIn("(int)(", self.gen("mt_qs_contract.h"))             # int32 / 7: signed 32
         self.assertIn("mtc_sdiv64(", self.gen("mtc_logic.h"))             # MtHalf(v): unknown
         self.assertIn("mtc_smod64(", self.gen("mtc_logic.h"))             # MtRem(v): unknown
         wide = self.gen("mt_wide_contract.h")
