@@ -13,9 +13,10 @@
 #define MT_SPEC_MISSION_CMDS_H
 
 /* ACSL only (empty to a C compiler), included by mt_spec_mission.h: the ids of the rows of
- * kernel/src/mt_mission_cmds.h by class, for mt_mission_kind_of's contract. The jumps
- * (DO_JUMP, DO_JUMP_TAG) and JUMP_TAG are mt_spec_mission.h's MtMissionIsJumpId and
- * MT_MAV_CMD_JUMP_TAG; every other id is unknown.
+ * kernel/src/mt_mission_cmds.h by class, for mt_mission_kind_of's contract, and by check
+ * flag (MtMissionFlag*), for mt_mission_check_cmd's. The jumps (DO_JUMP, DO_JUMP_TAG) and
+ * JUMP_TAG are mt_spec_mission.h's MtMissionIsJumpId and MT_MAV_CMD_JUMP_TAG; every other
+ * id is unknown.
  * Nav: id <= 95 (MAV_CMD_NAV_LAST) or one of AP_Mission::is_nav_cmd's exceptions
  * (NAV_SET_YAW_SPEED, NAV_SCRIPT_TIME, NAV_ATTITUDE_TIME). Do: every other command
  * but the jumps and JUMP_TAG (the conditions CONDITION_* are do commands). */
@@ -32,6 +33,88 @@
         id == 217 || id == 218 || id == 222 || id == 223 || id == 531 || id == 532 || id == 534 ||
         id == 1000 || id == 2000 || id == 2001 || id == 2500 || id == 2501 || id == 3000 ||
         id == 42600;
+    // the check flags of the table's row of id (0 for an unknown id); bits as named below
+    logic integer MtMissionCmdFlags(integer id) =
+        id == 16 ? 0x1d : // NAV_WAYPOINT: LOC NAN4 NN1 NN2
+        id == 17 ? 0x05 : // NAV_LOITER_UNLIM: LOC NAN4
+        id == 18 ? 0x09 : // NAV_LOITER_TURNS: LOC NN1
+        id == 19 ? 0x09 : // NAV_LOITER_TIME: LOC NN1
+        id == 20 ? 0x00 : // NAV_RETURN_TO_LAUNCH: -
+        id == 21 ? 0x05 : // NAV_LAND: LOC NAN4
+        id == 22 ? 0x05 : // NAV_TAKEOFF: LOC NAN4
+        id == 30 ? 0x01 : // NAV_CONTINUE_AND_CHANGE_ALT: LOC
+        id == 31 ? 0x01 : // NAV_LOITER_TO_ALT: LOC
+        id == 36 ? 0x01 : // NAV_ARC_WAYPOINT: LOC
+        id == 82 ? 0x09 : // NAV_SPLINE_WAYPOINT: LOC NN1
+        id == 83 ? 0x00 : // NAV_ALTITUDE_WAIT: -
+        id == 84 ? 0x05 : // NAV_VTOL_TAKEOFF: LOC NAN4
+        id == 85 ? 0x07 : // NAV_VTOL_LAND: LOC NAN3 NAN4
+        id == 92 ? 0x01 : // NAV_GUIDED_ENABLE: LOC
+        id == 93 ? 0x00 : // NAV_DELAY: -
+        id == 94 ? 0x01 : // NAV_PAYLOAD_PLACE: LOC
+        id == 112 ? 0x08 : // CONDITION_DELAY: NN1
+        id == 114 ? 0x08 : // CONDITION_DISTANCE: NN1
+        id == 115 ? 0x10 : // CONDITION_YAW: NN2
+        id == 177 ? 0x00 : // DO_JUMP: -
+        id == 178 ? 0x20 : // DO_CHANGE_SPEED: INT1
+        id == 179 ? 0x01 : // DO_SET_HOME: LOC
+        id == 181 ? 0x28 : // DO_SET_RELAY: NN1 INT1
+        id == 182 ? 0x78 : // DO_REPEAT_RELAY: NN1 NN2 INT1 INT2
+        id == 183 ? 0x70 : // DO_SET_SERVO: NN2 INT1 INT2
+        id == 184 ? 0x78 : // DO_REPEAT_SERVO: NN1 NN2 INT1 INT2
+        id == 188 ? 0x01 : // DO_RETURN_PATH_START: LOC
+        id == 189 ? 0x01 : // DO_LAND_START: LOC
+        id == 191 ? 0x01 : // DO_GO_AROUND: LOC
+        id == 193 ? 0x00 : // DO_PAUSE_CONTINUE: -
+        id == 194 ? 0x00 : // DO_SET_REVERSE: -
+        id == 195 ? 0x01 : // DO_SET_ROI_LOCATION: LOC
+        id == 197 ? 0x00 : // DO_SET_ROI_NONE: -
+        id == 201 ? 0x01 : // DO_SET_ROI: LOC
+        id == 202 ? 0x00 : // DO_DIGICAM_CONFIGURE: -
+        id == 203 ? 0x00 : // DO_DIGICAM_CONTROL: -
+        id == 205 ? 0x00 : // DO_MOUNT_CONTROL: -
+        id == 206 ? 0x08 : // DO_SET_CAM_TRIGG_DIST: NN1
+        id == 207 ? 0x00 : // DO_FENCE_ENABLE: -
+        id == 208 ? 0x00 : // DO_PARACHUTE: -
+        id == 210 ? 0x00 : // DO_INVERTED_FLIGHT: -
+        id == 211 ? 0x00 : // DO_GRIPPER: -
+        id == 212 ? 0x00 : // DO_AUTOTUNE_ENABLE: -
+        id == 213 ? 0x00 : // NAV_SET_YAW_SPEED: -
+        id == 215 ? 0x08 : // DO_SET_RESUME_REPEAT_DIST: NN1
+        id == 216 ? 0x00 : // DO_SPRAYER: -
+        id == 217 ? 0x00 : // DO_SEND_SCRIPT_MESSAGE: -
+        id == 218 ? 0x00 : // DO_AUX_FUNCTION: -
+        id == 222 ? 0x00 : // DO_GUIDED_LIMITS: -
+        id == 223 ? 0x00 : // DO_ENGINE_CONTROL: -
+        id == 531 ? 0x00 : // SET_CAMERA_ZOOM: -
+        id == 532 ? 0x00 : // SET_CAMERA_FOCUS: -
+        id == 534 ? 0x00 : // SET_CAMERA_SOURCE: -
+        id == 600 ? 0x28 : // JUMP_TAG: NN1 INT1
+        id == 601 ? 0x00 : // DO_JUMP_TAG: -
+        id == 1000 ? 0x00 : // DO_GIMBAL_MANAGER_PITCHYAW: -
+        id == 2000 ? 0x00 : // IMAGE_START_CAPTURE: -
+        id == 2001 ? 0x00 : // IMAGE_STOP_CAPTURE: -
+        id == 2500 ? 0x00 : // VIDEO_START_CAPTURE: -
+        id == 2501 ? 0x00 : // VIDEO_STOP_CAPTURE: -
+        id == 3000 ? 0x00 : // DO_VTOL_TRANSITION: -
+        id == 42600 ? 0x00 : // DO_WINCH: -
+        id == 42702 ? 0x00 : // NAV_SCRIPT_TIME: -
+        id == 42703 ? 0x00 : // NAV_ATTITUDE_TIME: -
+        0x00;
+    // F_LOC: uses x/y/z as a location: global frame, lat/lon range
+    predicate MtMissionFlagLoc(integer id) = (MtMissionCmdFlags(id) & 0x01) != 0;
+    // F_NAN3: param 3 may be NaN
+    predicate MtMissionFlagNan3(integer id) = (MtMissionCmdFlags(id) & 0x02) != 0;
+    // F_NAN4: param 4 may be NaN
+    predicate MtMissionFlagNan4(integer id) = (MtMissionCmdFlags(id) & 0x04) != 0;
+    // F_NN1: param 1 >= 0
+    predicate MtMissionFlagNn1(integer id) = (MtMissionCmdFlags(id) & 0x08) != 0;
+    // F_NN2: param 2 >= 0
+    predicate MtMissionFlagNn2(integer id) = (MtMissionCmdFlags(id) & 0x10) != 0;
+    // F_INT1: param 1 is an integer
+    predicate MtMissionFlagInt1(integer id) = (MtMissionCmdFlags(id) & 0x20) != 0;
+    // F_INT2: param 2 is an integer
+    predicate MtMissionFlagInt2(integer id) = (MtMissionCmdFlags(id) & 0x40) != 0;
 */
 
 #endif /* MT_SPEC_MISSION_CMDS_H */

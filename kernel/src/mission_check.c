@@ -35,6 +35,8 @@ _Static_assert((sizeof(k_cmds) / sizeof(k_cmds[0])) == N_CMDS, "N_CMDS must matc
     ensures range: 0 <= \result <= N_CMDS;
     ensures found: \result < N_CMDS ==> k_cmds[\result].id == id;
     ensures absent: \result == N_CMDS ==> \forall integer t; 0 <= t < N_CMDS ==> k_cmds[t].id != id;
+    ensures known: \result < N_CMDS <==> MtMissionIsKnownId(id);
+    ensures flags: \result < N_CMDS ==> k_cmds[\result].flags == MtMissionCmdFlags(id);
 */
 static uint32_t find_cmd(uint16_t id)
 {
@@ -79,7 +81,10 @@ uint8_t mt_mission_kind_of(uint16_t id)
  * 2 MISSION (read as GLOBAL: altitude above mean sea level), 5 GLOBAL_INT, 3 and 6 relative to
  * home, 10 and 11 above terrain. The frame of any other command is not looked at (AP ignores
  * it; the file layer warns). */
-/*@ assigns \nothing; */
+/*@ assigns \nothing;
+    ensures exact: \result != 0 <==> ((flags & F_LOC) == 0 || frame == 0 || frame == 2 ||
+        frame == 3 || frame == 5 || frame == 6 || frame == 10 || frame == 11);
+*/
 static int frame_ok(uint8_t frame, uint8_t flags)
 {
     if ((flags & F_LOC) == 0u) {
@@ -114,8 +119,15 @@ static int repeat_ok(int32_t v)
 
 /* Generic param rules from the table flags (params are never NaN here unless allowed). */
 /*@ requires \valid_read(c);
+    requires nan3: (flags & F_NAN3) != 0 <==> MtMissionFlagNan3(c->id);
+    requires nan4: (flags & F_NAN4) != 0 <==> MtMissionFlagNan4(c->id);
+    requires nn1: (flags & F_NN1) != 0 <==> MtMissionFlagNn1(c->id);
+    requires nn2: (flags & F_NN2) != 0 <==> MtMissionFlagNn2(c->id);
+    requires int1: (flags & F_INT1) != 0 <==> MtMissionFlagInt1(c->id);
+    requires int2: (flags & F_INT2) != 0 <==> MtMissionFlagInt2(c->id);
     assigns \nothing;
-    ensures \result == MT_OK || \result == MT_E_MISSION_PARAM;
+    ensures status: \result == MT_OK || \result == MT_E_MISSION_PARAM;
+    ensures exact: \result == MT_OK <==> MtMissionParamsOk(c);
 */
 static mt_status_t params_ok(const mt_mission_cmd_t *c, uint8_t flags)
 {
@@ -146,7 +158,8 @@ static mt_status_t params_ok(const mt_mission_cmd_t *c, uint8_t flags)
 /* Command-specific param rules. */
 /*@ requires \valid_read(c);
     assigns \nothing;
-    ensures \result == MT_OK || \result == MT_E_MISSION_PARAM;
+    ensures status: \result == MT_OK || \result == MT_E_MISSION_PARAM;
+    ensures exact: \result == MT_OK <==> MtMissionSpecialOk(c);
 */
 static mt_status_t special_ok(const mt_mission_cmd_t *c)
 {
@@ -244,13 +257,19 @@ mt_status_t mt_mission_check_cmd(const mt_mission_cmd_t *cmds, uint16_t n, uint1
 /* First JUMP_TAG in [1, n) whose tag is `tag` (fixed point), or n. Bounded by n. */
 /*@ requires MtMissionCmdsIn(cmds, n);
     assigns \nothing;
-    ensures 1 <= \result <= n;
+    ensures range: 1 <= \result <= n;
+    ensures found: \result < n ==> cmds[\result].id == MT_MAV_CMD_JUMP_TAG &&
+        cmds[\result].param[0] == tag;
+    ensures absent: \result == n ==> \forall integer k; 1 <= k < n ==>
+        !(cmds[k].id == MT_MAV_CMD_JUMP_TAG && cmds[k].param[0] == tag);
 */
 static uint16_t find_tag(const mt_mission_cmd_t *cmds, uint16_t n, int32_t tag)
 {
     uint16_t j;
 
     /*@ loop invariant 1 <= j <= n;
+        loop invariant \forall integer k; 1 <= k < j ==>
+            !(cmds[k].id == MT_MAV_CMD_JUMP_TAG && cmds[k].param[0] == tag);
         loop assigns j;
         loop variant n - j;
     */
@@ -289,7 +308,9 @@ static uint8_t node_safe(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
     return ((tgt != 0u) && (next != 0u)) ? 1u : 0u;
 }
 
-/* mt_mission_check without the mission object (which it does not need). */
+/* mt_mission_check without the mission object (which it does not need). ok.entries (what the
+ * list is reported as, up to the loop rule) is proved here by WP; mt_mission_check's public
+ * contract does not state it yet, as CBMC's run of that clause did not finish (issue 23). */
 /*@ requires cmds: n < 1 || n > MT_CFG_MISSION_MAX_CMDS || MtMissionCmdsIn(cmds, n);
     requires bad: \valid(bad) && \separated(bad, cmds + (0 .. n - 1));
     requires sep_scratch: \separated(bad, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
@@ -303,6 +324,7 @@ static uint8_t node_safe(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
       ensures located: \result == MT_OK <==> *bad == MT_MISSION_NONE;
       ensures in_range: \result != MT_OK ==> *bad < n;
       ensures targets: \result == MT_OK ==> MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
+      ensures entries: MtMissionListReported(cmds, n, \result, *bad);
     behavior bad_size:
       assumes n < 1 || n > MT_CFG_MISSION_MAX_CMDS;
       ensures status: \result == MT_E_MISSION_SIZE && *bad == 0;
@@ -323,34 +345,52 @@ static mt_status_t check_list(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t
     /*@ loop invariant 0 <= i <= n;
         loop invariant \forall integer j; 1 <= j < i ==> MtMissionIsJumpId(cmds[j].id) ==>
             1 <= mt_mission_scratch_target[j] < n && MtMissionRepeatOk(cmds[j].param[1]);
+        loop invariant entries: MtMissionEntriesOk(cmds, n, i);
+        loop invariant kept: MtMissionCmdsKept{Pre, Here}(cmds, n);
         loop assigns i, mt_mission_scratch_target[0 .. n - 1], *bad;
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {
         mt_status_t st = mt_mission_check_cmd(cmds, n, i);
+        uint16_t tgt = 0u;
+
         if (st != MT_OK) {
+            /*@ assert faulty: MtMissionEntryStatus(cmds, n, i, st); */
+            /*@ assert not_ok: !MtMissionEntryStatus(cmds, n, i, MT_OK); */
             *bad = i;
+            /*@ assert kept: MtMissionCmdsKept{LoopCurrent, Here}(cmds, n); */
+            /*@ assert reported: MtMissionListReported(cmds, n, st, i); */
             return st;
         }
-        mt_mission_scratch_target[i] = 0u;
         if ((i >= 1u) && (cmds[i].id == MT_MAV_CMD_DO_JUMP)) {
-            int32_t tgt = cmds[i].param[0] / MT_MISSION_MILLI;
-            mt_mission_scratch_target[i] = (uint16_t)tgt;
+            int32_t q = cmds[i].param[0] / MT_MISSION_MILLI;
+            tgt = (uint16_t)q;
         } else if ((i >= 1u) && (cmds[i].id == MT_MAV_CMD_DO_JUMP_TAG)) {
-            uint16_t t = find_tag(cmds, n, cmds[i].param[0]);
-            if (t >= n) {
+            tgt = find_tag(cmds, n, cmds[i].param[0]);
+            if (tgt >= n) {
+                /*@ assert untagged: MtMissionEntryStatus(cmds, n, i, MT_E_MISSION_JUMP); */
+                /*@ assert not_ok: !MtMissionEntryStatus(cmds, n, i, MT_OK); */
                 *bad = i;
+                /*@ assert kept: MtMissionCmdsKept{LoopCurrent, Here}(cmds, n); */
+                /*@ assert reported: MtMissionListReported(cmds, n, MT_E_MISSION_JUMP, i); */
                 return MT_E_MISSION_JUMP;
             }
-            mt_mission_scratch_target[i] = t;
+            /*@ assert tagged: MtMissionTagFound(cmds, n, i); */
         } else {
             /* not a jump: no target */
         }
+        mt_mission_scratch_target[i] = tgt;
+        /*@ assert entry_ok: MtMissionEntryStatus(cmds, n, i, MT_OK); */
+        /*@ assert kept_here: MtMissionCmdsKept{LoopCurrent, Here}(cmds, n); */
+        /*@ assert before_ok: MtMissionEntriesOk(cmds, n, i); */
     }
+    /*@ assert back: MtMissionCmdsKept{Here, Pre}(cmds, n); */
+    /*@ assert entries_pre: MtMissionEntriesOk{Pre}(cmds, n, n); */
     /* 2. loop check: mark the nodes from which every walk reaches a nav command or
      *    the end; a node never marked lies on, or leads into, a loop without a nav
      *    command. n rounds suffice (each round marks at least one new node). */
     /*@ loop invariant 0 <= i <= n;
+        loop invariant kept: MtMissionCmdsKept{Pre, Here}(cmds, n);
         loop assigns i, mt_mission_scratch_safe[0 .. n - 1];
         loop variant n - i;
     */
@@ -360,6 +400,7 @@ static mt_status_t check_list(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t
     changed = 1;
     /*@ loop invariant 0 <= round <= n;
         loop invariant MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
+        loop invariant kept: MtMissionCmdsKept{Pre, Here}(cmds, n);
         loop assigns round, changed, i, mt_mission_scratch_safe[0 .. n - 1];
         loop variant n - round;
     */
@@ -367,6 +408,7 @@ static mt_status_t check_list(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t
         changed = 0;
         /*@ loop invariant 0 <= i < n;
             loop invariant MtMissionStaged(&mt_mission_scratch_target[0], cmds, n);
+            loop invariant kept: MtMissionCmdsKept{Pre, Here}(cmds, n);
             loop assigns i, changed, mt_mission_scratch_safe[0 .. n - 1];
             loop variant i;
         */
@@ -378,16 +420,21 @@ static mt_status_t check_list(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t
         }
     }
     /*@ loop invariant 1 <= i <= n;
+        loop invariant kept: MtMissionCmdsKept{Pre, Here}(cmds, n);
         loop assigns i, *bad;
         loop variant n - i;
     */
     for (i = 1u; i < n; i++) {
         if (mt_mission_scratch_safe[i] == 0u) {
             *bad = i;
+            /*@ assert kept: MtMissionCmdsKept{Pre, Here}(cmds, n); */
+            /*@ assert reported: MtMissionListReported(cmds, n, MT_E_MISSION_LOOP, i); */
             return MT_E_MISSION_LOOP;
         }
     }
     *bad = MT_MISSION_NONE;
+    /*@ assert kept: MtMissionCmdsKept{Pre, Here}(cmds, n); */
+    /*@ assert reported: MtMissionListReported(cmds, n, MT_OK, MT_MISSION_NONE); */
     return MT_OK;
 }
 

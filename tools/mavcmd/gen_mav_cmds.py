@@ -418,9 +418,10 @@ def render_spec(rows, nav_last):
         "#define MT_SPEC_MISSION_CMDS_H",
         "",
         "/* ACSL only (empty to a C compiler), included by mt_spec_mission.h: the ids of the rows of",
-        " * kernel/src/mt_mission_cmds.h by class, for mt_mission_kind_of's contract. The jumps",
-        " * (DO_JUMP, DO_JUMP_TAG) and JUMP_TAG are mt_spec_mission.h's MtMissionIsJumpId and",
-        " * MT_MAV_CMD_JUMP_TAG; every other id is unknown.",
+        " * kernel/src/mt_mission_cmds.h by class, for mt_mission_kind_of's contract, and by check",
+        " * flag (MtMissionFlag*), for mt_mission_check_cmd's. The jumps (DO_JUMP, DO_JUMP_TAG) and",
+        " * JUMP_TAG are mt_spec_mission.h's MtMissionIsJumpId and MT_MAV_CMD_JUMP_TAG; every other",
+        " * id is unknown.",
         f" * Nav: id <= {nav_last} (MAV_CMD_NAV_LAST) or one of AP_Mission::is_nav_cmd's exceptions",
         f" * ({', '.join(NAV_EXCEPTIONS)}). Do: every other command",
         " * but the jumps and JUMP_TAG (the conditions CONDITION_* are do commands). */",
@@ -432,6 +433,16 @@ def render_spec(rows, nav_last):
         "    predicate MtMissionIsDoId(integer id) =",
     ]
     out += id_disjunction([r[0] for r in rows if r[2] == "do"], " " * 8)
+    out += ["    // the check flags of the table's row of id (0 for an unknown id); bits as named below",
+            "    logic integer MtMissionCmdFlags(integer id) ="]
+    for ident, name, _, flags in rows:
+        value = sum(bit for f, bit in FLAG_BITS if f in flags)
+        out.append(f"        id == {ident} ? 0x{value:02x} : // {name}: {' '.join(flags) or '-'}")
+    out.append("        0x00;")
+    for flag, bit in FLAG_BITS:
+        out += [f"    // F_{flag}: {FLAG_DOC[flag]}",
+                f"    predicate MtMissionFlag{flag.capitalize()}(integer id) = "
+                f"(MtMissionCmdFlags(id) & 0x{bit:02x}) != 0;"]
     out += ["*/", "", "#endif /* MT_SPEC_MISSION_CMDS_H */", ""]
     return "\n".join(out)
 

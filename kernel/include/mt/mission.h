@@ -238,17 +238,14 @@ void mt_mission_init(mt_mission_t *m, mt_mission_cmd_fn_t start_fn, mt_mission_c
 
 /** Check one command of a candidate list (ids, params, NaN rules, frames,
  *  location ranges, jump target/repeat ranges). Pure.
- *  @retval MT_OK, MT_E_MISSION_CMD, MT_E_MISSION_PARAM, MT_E_MISSION_LOCATION,
- *          MT_E_MISSION_FRAME, MT_E_MISSION_JUMP */
+ *  @retval MT_OK when the command passes every rule, else the status of the first rule
+ *          it breaks, in this order (MtMissionCmdStatus): MT_E_MISSION_CMD (unknown id,
+ *          or a home that is not a waypoint), MT_E_MISSION_FRAME, MT_E_MISSION_PARAM,
+ *          MT_E_MISSION_LOCATION, MT_E_MISSION_JUMP */
 /*@ requires cmds: MtMissionCmdsIn(cmds, n);
     requires index: 0 <= i < n;
     assigns \nothing;
-    ensures jump_ok: \result == MT_OK ==> MtMissionJumpCmdOk(cmds, n, i);
-    ensures target_ok: \result == MT_OK ==> i >= 1 ==> cmds[i].id == MT_MAV_CMD_DO_JUMP ==>
-        1 <= cmds[i].param[0] / MT_MISSION_MILLI < n && cmds[i].param[0] % MT_MISSION_MILLI == 0;
-    ensures status: \result == MT_OK || \result == MT_E_MISSION_CMD || \result == MT_E_MISSION_PARAM ||
-                    \result == MT_E_MISSION_LOCATION || \result == MT_E_MISSION_FRAME ||
-                    \result == MT_E_MISSION_JUMP;
+    ensures exact: MtMissionCmdStatus(cmds, n, i, \result);
 */
 mt_status_t mt_mission_check_cmd(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i);
 
