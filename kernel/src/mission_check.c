@@ -308,9 +308,7 @@ static uint8_t node_safe(const mt_mission_cmd_t *cmds, uint16_t n, uint16_t i)
     return ((tgt != 0u) && (next != 0u)) ? 1u : 0u;
 }
 
-/* mt_mission_check without the mission object (which it does not need). ok.entries (what the
- * list is reported as, up to the loop rule) is proved here by WP; mt_mission_check's public
- * contract does not state it yet, as CBMC's run of that clause did not finish (issue 23). */
+/* mt_mission_check without the mission object; ok.entries is WP's alone for now (issue 23). */
 /*@ requires cmds: n < 1 || n > MT_CFG_MISSION_MAX_CMDS || MtMissionCmdsIn(cmds, n);
     requires bad: \valid(bad) && \separated(bad, cmds + (0 .. n - 1));
     requires sep_scratch: \separated(bad, mt_mission_scratch_safe + (0 .. MT_CFG_MISSION_MAX_CMDS - 1),
