@@ -435,9 +435,10 @@ class Translator:
         circuit for a 128-bit signed division is many times that of a 64-bit one, and when the
         kernel divides the same values at the same width the solver can share one circuit.
           * both ranges known: the narrowest of unsigned 32, signed 32, unsigned 64 and signed
-            64 bits that holds them (and the quotient), without a check; __int128 when none does and a range can leave
-            the signed and unsigned 64-bit ranges (e.g. ticks * 10^6), through MTC_UDIV128 /
-            MTC_UMOD128 when both are non-negative (the operator, or the model of B11);
+            64 bits that holds them (and the quotient), without a check; __int128 when none
+            does and a range can leave the signed and unsigned 64-bit ranges (e.g. ticks *
+            10^6), through MTC_UDIV128 / MTC_UMOD128 when both are non-negative (the
+            operator, or the model of B11);
           * a dividend known to be in (-2^64, 2^64) but not of one sign (a difference of two
             64-bit values) over a known non-negative divisor: unsigned 64 bits, behind an
             assertion that the dividend is not negative;

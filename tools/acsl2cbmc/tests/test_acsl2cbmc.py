@@ -729,9 +729,9 @@ class ClauseSelection(unittest.TestCase):
 
 class Division(unittest.TestCase):
     """ACSL / and % at the narrowest exact width (Translator.divide): unsigned and signed 32
-    bits, unsigned and signed 64 bits where the operands' ranges are known, a checked 64-bit division where
-    they are not (logic-function parameters, differences), __int128 where they can leave 64
-    bits. Negative operands keep ACSL's truncation; a value outside the checked range is a
+    bits, unsigned and signed 64 bits where the operands' ranges are known, a checked 64-bit
+    division where they are not (logic-function parameters, differences), __int128 where they
+    can leave 64 bits. Negative operands keep ACSL's truncation; a value outside the checked range is a
     failed check under its own description, not a wrong quotient."""
 
     def setUp(self):
